@@ -1,0 +1,63 @@
+/*---------------------------------------------------------------------------*\
+  coagulationFoam: weighted stochastic particles coupled to OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "cellAlgorithm.H"
+#include "coagulationKernel.H"
+#include "error.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(cellAlgorithm, 0);
+    defineRunTimeSelectionTable(cellAlgorithm, kernel);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::cellAlgorithm::cellAlgorithm
+(
+    const std::string& coreName,
+    const coagulationKernel& kernel,
+    const coag::InceptionModel& inception,
+    const coag::NumberControl& control
+)
+:
+    core_(coag::makeCellAlgorithm(coreName, kernel.core(), inception, control))
+{}
+
+
+// * * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
+
+Foam::autoPtr<Foam::cellAlgorithm> Foam::cellAlgorithm::New
+(
+    const dictionary& dict,
+    const coagulationKernel& kernel,
+    const coag::InceptionModel& inception,
+    const coag::NumberControl& control
+)
+{
+    const word algorithmType(dict.get<word>("algorithm"));
+
+    Info<< "Selecting cell algorithm " << algorithmType << endl;
+
+    auto cstrIter = kernelConstructorTablePtr_->cfind(algorithmType);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInLookup
+        (
+            dict,
+            "algorithm",
+            algorithmType,
+            *kernelConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+
+    return autoPtr<cellAlgorithm>(cstrIter()(kernel, inception, control));
+}
+
+
+// ************************************************************************* //

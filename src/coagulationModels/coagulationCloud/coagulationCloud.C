@@ -1,0 +1,639 @@
+/*---------------------------------------------------------------------------*\
+  coagulationFoam: weighted stochastic particles coupled to OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "coagulationCloud.H"
+#include "fvMesh.H"
+#include "surfaceFields.H"
+#include "polyMeshTetDecomposition.H"
+#include "zeroGradientFvPatchFields.H"
+#include "processorPolyPatch.H"
+
+#include <random>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- SplitMix64 finaliser: decorrelates the seeds of neighbouring streams
+inline uint64_t mix64(uint64_t z)
+{
+    z += 0x9e3779b97f4a7c15ULL;
+    z = (z ^ (z >> 30))*0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27))*0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+}
+
+//- A positive scalar entry, or a FatalIOError naming the entry
+Foam::scalar getPositive(const Foam::dictionary& dict, const Foam::word& key)
+{
+    const Foam::scalar value = dict.get<Foam::scalar>(key);
+    if (!(value > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' = " << value << " in " << dict.name()
+            << " must be positive" << Foam::nl << Foam::exit(Foam::FatalIOError);
+    }
+    return value;
+}
+
+//- A non-negative scalar entry, or a FatalIOError naming the entry
+Foam::scalar getNonNegative(const Foam::dictionary& dict, const Foam::word& key)
+{
+    const Foam::scalar value = dict.get<Foam::scalar>(key);
+    if (!(value >= 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' = " << value << " in " << dict.name()
+            << " must not be negative" << Foam::nl
+            << Foam::exit(Foam::FatalIOError);
+    }
+    return value;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::coagulationCloud::readInception(const dictionary& dict)
+{
+    inception_.rate = getNonNegative(dict, "rate");
+    inception_.type.mass = getPositive(dict, "mass");
+    inception_.weight = particleWeight_;
+
+    const word zoneName(dict.getOrDefault<word>("cellZone", "none"));
+
+    if (zoneName == "none")
+    {
+        inceptionCell_ = true;
+        return;
+    }
+
+    const label zonei = mesh_.cellZones().findZoneID(zoneName);
+    if (zonei < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "cellZone '" << zoneName << "' (entry 'cellZone' in "
+            << dict.name() << ") is not in the mesh; its cellZones are "
+            << mesh_.cellZones().names() << nl
+            << exit(FatalIOError);
+    }
+    inceptionCell_ = false;
+    for (const label celli : mesh_.cellZones()[zonei])
+    {
+        inceptionCell_[celli] = true;
+    }
+}
+
+
+void Foam::coagulationCloud::readInflow(const dictionary& dict)
+{
+    const wordList patchNames(dict.get<wordList>("patches"));
+    inflowDensity_ = getNonNegative(dict, "density");
+    inflowMass_ = getPositive(dict, "mass");
+
+    inflowPatches_.setSize(patchNames.size());
+    forAll(patchNames, i)
+    {
+        inflowPatches_[i] = mesh_.boundaryMesh().findPatchID(patchNames[i]);
+        if (inflowPatches_[i] < 0)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Inflow patch '" << patchNames[i] << "' (entry 'patches' in "
+                << dict.name() << ") is not in the mesh; its patches are "
+                << mesh_.boundaryMesh().names() << nl
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+void Foam::coagulationCloud::reseed(const label index, const label purpose)
+{
+    uint64_t s = mix64(seed_);
+    s = mix64(s ^ uint64_t(Pstream::myProcNo()));
+    s = mix64(s ^ uint64_t(index));
+    s = mix64(s ^ uint64_t(mesh_.time().timeIndex()));
+    s = mix64(s ^ uint64_t(purpose));
+    rng_.engine().seed(s);
+}
+
+
+void Foam::coagulationCloud::sortByCell()
+{
+    const label nCells = mesh_.nCells();
+
+    cellStart_.setSize(nCells + 1);
+    cellStart_ = 0;
+    for (const coagulationParticle& p : *this)
+    {
+        ++cellStart_[p.cell() + 1];
+    }
+    for (label celli = 0; celli < nCells; ++celli)
+    {
+        cellStart_[celli + 1] += cellStart_[celli];
+    }
+
+    cellParticles_.setSize(this->size());
+    labelList next(SubList<label>(cellStart_, nCells));
+    for (coagulationParticle& p : *this)
+    {
+        cellParticles_[next[p.cell()]++] = &p;
+    }
+}
+
+
+Foam::autoPtr<Foam::coagulationParticle>
+Foam::coagulationCloud::newParticleInCell
+(
+    const label celli,
+    const scalar mass,
+    const scalar weight
+)
+{
+    // Pick a tet of the cell's decomposition with probability proportional
+    // to its volume, then a point uniformly in it (Dirichlet(1,1,1,1)
+    // barycentric coordinates from three sorted uniforms)
+    const List<tetIndices> tets =
+        polyMeshTetDecomposition::cellTetIndices(mesh_, celli);
+
+    scalar total = 0;
+    for (const tetIndices& tet : tets)
+    {
+        total += tet.tet(mesh_).mag();
+    }
+
+    scalar target = rng_.uniform()*total;
+    label chosen = tets.size() - 1;
+    forAll(tets, i)
+    {
+        target -= tets[i].tet(mesh_).mag();
+        if (target <= 0)
+        {
+            chosen = i;
+            break;
+        }
+    }
+
+    scalar u[3] = {rng_.uniform(), rng_.uniform(), rng_.uniform()};
+    std::sort(u, u + 3);
+    const barycentric coordinates(u[0], u[1] - u[0], u[2] - u[1], 1 - u[2]);
+
+    return autoPtr<coagulationParticle>::New
+    (
+        mesh_,
+        coordinates,
+        celli,
+        tets[chosen].face(),
+        tets[chosen].tetPt(),
+        mass,
+        weight
+    );
+}
+
+
+void Foam::coagulationCloud::injectInflow
+(
+    const volVectorField& U,
+    const scalar dt
+)
+{
+    if (inflowDensity_ <= 0)
+    {
+        return;
+    }
+
+    for (const label patchi : inflowPatches_)
+    {
+        const polyPatch& pp = mesh_.boundaryMesh()[patchi];
+        const vectorField& Sf = mesh_.Sf().boundaryField()[patchi];
+        const vectorField& Ub = U.boundaryField()[patchi];
+        const pointField& points = mesh_.points();
+
+        forAll(pp, facei)
+        {
+            const scalar inwardFlux = -(Ub[facei] & Sf[facei]);
+            if (inwardFlux <= 0)
+            {
+                continue;
+            }
+
+            // Computational particles entering over dt: Poisson with mean
+            // c_in * flux * dt / W
+            reseed(pp.start() + facei, 1);
+            std::poisson_distribution<label> count
+            (
+                inflowDensity_*inwardFlux*dt/particleWeight_
+            );
+            const label nNew = count(rng_.engine());
+
+            const face& f = pp[facei];
+            const point fc = f.centre(points);
+            const label owner = pp.faceCells()[facei];
+            const vector Uin = U[owner];
+
+            for (label i = 0; i < nNew; ++i)
+            {
+                // Uniform point on the face (fan of triangles about its
+                // centre, chosen by area), then the distance travelled since
+                // crossing it, uniform over the step
+                scalar target = rng_.uniform()*f.mag(points);
+                label tri = f.size() - 1;
+                forAll(f, k)
+                {
+                    target -= triPointRef
+                    (
+                        fc, points[f[k]], points[f.nextLabel(k)]
+                    ).mag();
+                    if (target <= 0)
+                    {
+                        tri = k;
+                        break;
+                    }
+                }
+                scalar a = rng_.uniform();
+                scalar b = rng_.uniform();
+                if (a + b > 1)
+                {
+                    a = 1 - a;
+                    b = 1 - b;
+                }
+                const point onFace =
+                    fc
+                  + a*(points[f[tri]] - fc)
+                  + b*(points[f.nextLabel(tri)] - fc);
+
+                const point position = onFace + rng_.uniform()*dt*Uin;
+
+                this->addParticle
+                (
+                    new coagulationParticle
+                    (
+                        mesh_, position, owner, inflowMass_, particleWeight_
+                    )
+                );
+
+                inflow_.particles += 1;
+                inflow_.number += particleWeight_;
+                inflow_.mass += particleWeight_*inflowMass_;
+            }
+        }
+    }
+}
+
+
+Foam::coagulationCloud::balance Foam::coagulationCloud::domainContent() const
+{
+    balance b;
+    for (const coagulationParticle& p : *this)
+    {
+        b.particles += 1;
+        b.number += p.weight();
+        b.mass += p.weight()*p.mass();
+    }
+    reduce(b.particles, sumOp<label>());
+    reduce(b.number, sumOp<scalar>());
+    reduce(b.mass, sumOp<scalar>());
+    return b;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::coagulationCloud::coagulationCloud
+(
+    const fvMesh& mesh,
+    const word& cloudName
+)
+:
+    Cloud<coagulationParticle>(mesh, cloudName, false),
+    mesh_(mesh),
+    properties_
+    (
+        IOobject
+        (
+            "coagulationProperties",
+            mesh.time().constant(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    ),
+    kernel_(coagulationKernel::New(properties_.subDict("kernel"))),
+    n_(0),
+    V1_(0),
+    particleWeight_(0),
+    inception_(),
+    inceptionCell_(mesh.nCells(), false),
+    algorithm_(),
+    algorithmNoInception_(),
+    seed_(0),
+    inflowPatches_(),
+    inflowDensity_(0),
+    inflowMass_(1),
+    moments_(4),
+    removedByCoagulation_(0),
+    events_(),
+    cellStart_(),
+    cellParticles_(),
+    population_(),
+    survived_(),
+    rng_(0)
+{
+    // Statistical scaling of the paper: W = Vref/(n V1).  V1 may be given
+    // per algorithm (the paper uses different V1 for DSA and SWA), so that
+    // the 'algorithm' keyword alone switches a case between them.
+    {
+        const dictionary& dict = properties_.subDict("statisticalWeight");
+        n_ = getPositive(dict, "n");
+        if (dict.isDict("V1"))
+        {
+            V1_ = getPositive
+            (
+                dict.subDict("V1"), properties_.get<word>("algorithm")
+            );
+        }
+        else
+        {
+            V1_ = getPositive(dict, "V1");
+        }
+        const scalar meanCellVolume =
+            gSum(mesh_.V())/returnReduce(mesh_.nCells(), sumOp<label>());
+        particleWeight_ = meanCellVolume/(n_*V1_);
+    }
+
+    readInception(properties_.subDict("inception"));
+
+    if (properties_.found("inflow"))
+    {
+        readInflow(properties_.subDict("inflow"));
+    }
+
+    {
+        const label seed = properties_.get<label>("seed");
+        if (seed < 0)
+        {
+            FatalIOErrorInFunction(properties_)
+                << "Entry 'seed' = " << seed << " in " << properties_.name()
+                << " must not be negative" << nl << exit(FatalIOError);
+        }
+        seed_ = uint64_t(seed);
+    }
+
+    coag::NumberControl control;
+    if (properties_.found("numberControl"))
+    {
+        const dictionary& dict = properties_.subDict("numberControl");
+        control.maxParticles =
+            std::size_t(dict.getOrDefault<label>("maxParticlesPerCell", 0));
+    }
+
+    algorithm_ =
+        cellAlgorithm::New(properties_, *kernel_, inception_, control);
+
+    coag::InceptionModel noInception(inception_);
+    noInception.rate = 0;
+    algorithmNoInception_ =
+        cellAlgorithm::New(properties_, *kernel_, noInception, control);
+
+    // Particles of the start time, if any
+    coagulationParticle::readFields(*this);
+
+    for (label k = 0; k < 4; ++k)
+    {
+        moments_.set
+        (
+            k,
+            new volScalarField
+            (
+                IOobject
+                (
+                    "M" + Foam::name(k),
+                    mesh_.time().timeName(),
+                    mesh_,
+                    IOobject::NO_READ,
+                    IOobject::AUTO_WRITE
+                ),
+                mesh_,
+                dimensionedScalar(dimless/dimVolume, Zero),
+                zeroGradientFvPatchScalarField::typeName
+            )
+        );
+    }
+
+    initial_ = domainContent();
+    updateMoments();
+
+    Info<< "Coagulation cloud " << cloudName << ": "
+        << initial_.particles << " particles, weight per new particle "
+        << particleWeight_ << ", inception rate " << inception_.rate
+        << " in " << returnReduce(std::count(inceptionCell_.begin(), inceptionCell_.end(), true), sumOp<label>())
+        << " cells" << nl << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::coagulationCloud::coagulate(const scalar dt)
+{
+    sortByCell();
+
+    const scalarField& V = mesh_.V();
+    const label nCells = mesh_.nCells();
+    const bool hasInception = inception_.rate > 0;
+
+    coag::StepStatistics stats;
+
+    for (label celli = 0; celli < nCells; ++celli)
+    {
+        const label start = cellStart_[celli];
+        const label np = cellStart_[celli + 1] - start;
+        const bool incepts = hasInception && inceptionCell_[celli];
+
+        // Without inception a cell needs a pair to change
+        if (np < 2 && !incepts)
+        {
+            continue;
+        }
+
+        population_.volume = V[celli];
+        population_.particles.clear();
+        for (label i = 0; i < np; ++i)
+        {
+            const coagulationParticle& p = *cellParticles_[start + i];
+            coag::Particle cp;
+            cp.type.mass = p.mass();
+            cp.weight = p.weight();
+            cp.tag = i;
+            population_.particles.push_back(cp);
+        }
+
+        reseed(celli, 0);
+        (incepts ? algorithm_ : algorithmNoInception_)->advance
+        (
+            population_, dt, rng_, stats
+        );
+
+        // Write the cell's new state back into the cloud
+        survived_.assign(np, 0);
+        for (const coag::Particle& cp : population_.particles)
+        {
+            if (cp.tag >= 0)
+            {
+                coagulationParticle& p = *cellParticles_[start + cp.tag];
+                p.mass() = cp.type.mass;
+                p.weight() = cp.weight;
+                survived_[cp.tag] = 1;
+            }
+            else
+            {
+                // New particles are not in cellParticles_: safe to add now
+                this->addParticle
+                (
+                    newParticleInCell(celli, cp.type.mass, cp.weight).ptr()
+                );
+            }
+        }
+        for (label i = 0; i < np; ++i)
+        {
+            if (!survived_[i])
+            {
+                this->deleteParticle(*cellParticles_[start + i]);
+                ++removedByCoagulation_;
+            }
+        }
+    }
+
+    incepted_.particles += label(stats.inceptions);
+    incepted_.number += stats.inceptions*particleWeight_;
+    incepted_.mass += stats.inceptedMass;
+
+    events_.coagulations += stats.coagulations;
+    events_.fictitious += stats.fictitious;
+    events_.inceptions += stats.inceptions;
+    events_.halvings += stats.halvings;
+    events_.doublings += stats.doublings;
+    events_.inceptedMass += stats.inceptedMass;
+}
+
+
+void Foam::coagulationCloud::advect(const volVectorField& U, const scalar dt)
+{
+    const label nPatches = mesh_.boundaryMesh().size();
+    List<label> outParticles(nPatches, Zero);
+    List<scalar> outNumber(nPatches, Zero);
+    List<scalar> outMass(nPatches, Zero);
+
+    coagulationParticle::trackingData td
+    (
+        *this, U, outParticles, outNumber, outMass
+    );
+    Cloud<coagulationParticle>::move(*this, td, dt);
+
+    for (label patchi = 0; patchi < nPatches; ++patchi)
+    {
+        outflow_.particles += outParticles[patchi];
+        outflow_.number += outNumber[patchi];
+        outflow_.mass += outMass[patchi];
+    }
+
+    injectInflow(U, dt);
+}
+
+
+void Foam::coagulationCloud::updateMoments()
+{
+    for (volScalarField& Mk : moments_)
+    {
+        Mk.primitiveFieldRef() = 0;
+    }
+
+    scalarField& M0 = moments_[0].primitiveFieldRef();
+    scalarField& M1 = moments_[1].primitiveFieldRef();
+    scalarField& M2 = moments_[2].primitiveFieldRef();
+    scalarField& M3 = moments_[3].primitiveFieldRef();
+
+    for (const coagulationParticle& p : *this)
+    {
+        const label celli = p.cell();
+        const scalar w = p.weight();
+        const scalar m = p.mass();
+        M0[celli] += w;
+        M1[celli] += w*m;
+        M2[celli] += w*m*m;
+        M3[celli] += w*m*m*m;
+    }
+
+    for (volScalarField& Mk : moments_)
+    {
+        Mk.primitiveFieldRef() /= mesh_.V();
+        Mk.correctBoundaryConditions();
+    }
+}
+
+
+Foam::scalar Foam::coagulationCloud::massBalanceError() const
+{
+    balance in(initial_);
+    balance inflow(inflow_), incepted(incepted_), outflow(outflow_);
+    reduce(inflow.mass, sumOp<scalar>());
+    reduce(incepted.mass, sumOp<scalar>());
+    reduce(outflow.mass, sumOp<scalar>());
+
+    const balance now = domainContent();
+    const scalar expected = in.mass + inflow.mass + incepted.mass - outflow.mass;
+    const scalar scale =
+        max(max(now.mass, in.mass + inflow.mass + incepted.mass), VSMALL);
+
+    return (now.mass - expected)/scale;
+}
+
+
+Foam::label Foam::coagulationCloud::particleBalanceError() const
+{
+    label change =
+        inflow_.particles + incepted_.particles - outflow_.particles
+      - removedByCoagulation_;
+    reduce(change, sumOp<label>());
+
+    return domainContent().particles - initial_.particles - change;
+}
+
+
+void Foam::coagulationCloud::report() const
+{
+    balance inflow(inflow_), incepted(incepted_), outflow(outflow_);
+    reduce(inflow.mass, sumOp<scalar>());
+    reduce(incepted.mass, sumOp<scalar>());
+    reduce(outflow.mass, sumOp<scalar>());
+    reduce(inflow.particles, sumOp<label>());
+    reduce(incepted.particles, sumOp<label>());
+    reduce(outflow.particles, sumOp<label>());
+
+    scalar coagulations = events_.coagulations;
+    scalar fictitious = events_.fictitious;
+    reduce(coagulations, sumOp<scalar>());
+    reduce(fictitious, sumOp<scalar>());
+
+    const balance now = domainContent();
+
+    Info<< "Coagulation cloud:" << nl
+        << "    particles in domain        = " << now.particles << nl
+        << "    physical particles         = " << now.number << nl
+        << "    coagulation events         = " << coagulations
+        << " (fictitious " << fictitious << ")" << nl
+        << "    particles in/incepted/out  = " << inflow.particles << " / "
+        << incepted.particles << " / " << outflow.particles << nl
+        << "    mass initial + inflow + inception - outflow = "
+        << initial_.mass << " + " << inflow.mass << " + " << incepted.mass
+        << " - " << outflow.mass << nl
+        << "    mass in domain             = " << now.mass << nl
+        << "    mass balance error (rel.)  = " << massBalanceError() << nl
+        << "    particle balance error     = " << particleBalanceError()
+        << endl;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,68 @@
+/*---------------------------------------------------------------------------*\
+  coagulationFoam: weighted stochastic particles coupled to OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "coagulationKernel.H"
+#include "error.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(coagulationKernel, 0);
+    defineRunTimeSelectionTable(coagulationKernel, dictionary);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::coagulationKernel::coagulationKernel
+(
+    const dictionary& dict,
+    const std::string& coreName
+)
+:
+    K0_(dict.get<scalar>("K0")),
+    core_()
+{
+    if (!(K0_ > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Kernel coefficient K0 = " << K0_ << " in " << dict.name()
+            << " must be positive" << nl
+            << exit(FatalIOError);
+    }
+
+    core_ = coag::makeKernel(coreName, K0_);
+}
+
+
+// * * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
+
+Foam::autoPtr<Foam::coagulationKernel> Foam::coagulationKernel::New
+(
+    const dictionary& dict
+)
+{
+    const word kernelType(dict.get<word>("type"));
+
+    Info<< "Selecting coagulation kernel " << kernelType << endl;
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(kernelType);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInLookup
+        (
+            dict,
+            "coagulationKernel",
+            kernelType,
+            *dictionaryConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+
+    return autoPtr<coagulationKernel>(cstrIter()(dict));
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,117 @@
+/*---------------------------------------------------------------------------*\
+  coagulationFoam: weighted stochastic particles coupled to OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "coagulationSampler.H"
+#include "fvMesh.H"
+#include "OSspecific.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::coagulationSampler::coagulationSampler(const coagulationCloud& cloud)
+:
+    cloud_(cloud),
+    tRelax_(0),
+    stepsPerSample_(1),
+    writer_(),
+    values_()
+{
+    const dictionary& dict = cloud.properties().subDict("sampling");
+    const Time& runTime = cloud.pMesh().time();
+    const fvMesh& mesh = dynamic_cast<const fvMesh&>(cloud.pMesh());
+
+    tRelax_ = dict.get<scalar>("tRelax");
+    const scalar interval = dict.get<scalar>("sampleInterval");
+    const scalar dt = runTime.deltaTValue();
+    stepsPerSample_ = label(std::round(interval/dt));
+
+    if
+    (
+        tRelax_ < 0 || stepsPerSample_ < 1
+     || mag(stepsPerSample_*dt - interval) > 1e-6*interval
+    )
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'sampleInterval' = " << interval << " in " << dict.name()
+            << " must be a positive multiple of deltaT = " << dt
+            << ", and 'tRelax' = " << tRelax_ << " must not be negative" << nl
+            << exit(FatalIOError);
+    }
+
+    const fileName dir
+    (
+        runTime.globalPath()/"postProcessing"/"coagulationSamples"
+    );
+    // Every processor writes its own file: each makes sure the folder exists
+    mkDir(dir);
+
+    fileName file("samples_" + runTime.timeName());
+    if (Pstream::parRun())
+    {
+        file += "_processor" + Foam::name(Pstream::myProcNo());
+    }
+    file = dir/(file + ".h5");
+
+    const vectorField& C = mesh.C().primitiveField();
+    std::vector<std::array<double, 3>> centres(C.size());
+    forAll(C, celli)
+    {
+        centres[celli] = {C[celli].x(), C[celli].y(), C[celli].z()};
+    }
+
+    writer_.reset(new coag::MomentSeriesWriter(file, centres, 4));
+
+    writer_->setAttribute("n", cloud.n());
+    writer_->setAttribute("V1", cloud.V1());
+    writer_->setAttribute("K0", cloud.kernel().K0());
+    writer_->setAttribute("inceptionRate", cloud.inception().rate);
+    writer_->setAttribute("seed", double(cloud.seed()));
+    writer_->setAttribute("splitDeltaT", dt);
+    writer_->setAttribute("sampleInterval", interval);
+    writer_->setAttribute("tRelax", tRelax_);
+    writer_->setAttribute("particleWeight", cloud.particleWeight());
+    writer_->setAttribute
+    (
+        "algorithm", cloud.properties().get<word>("algorithm")
+    );
+    writer_->setAttribute
+    (
+        "kernel", cloud.properties().subDict("kernel").get<word>("type")
+    );
+
+    values_.resize(4*C.size());
+
+    Info<< "Sampling moments every " << stepsPerSample_ << " steps into "
+        << dir << nl << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::coagulationSampler::sample()
+{
+    const Time& runTime = cloud_.pMesh().time();
+    if (runTime.timeIndex() % stepsPerSample_ != 0)
+    {
+        return;
+    }
+
+    const PtrList<volScalarField>& M = cloud_.moments();
+    const label nCells = M[0].size();
+    for (label celli = 0; celli < nCells; ++celli)
+    {
+        for (label k = 0; k < 4; ++k)
+        {
+            values_[4*celli + k] = M[k][celli];
+        }
+    }
+    writer_->append(runTime.value(), values_);
+
+    if (runTime.writeTime())
+    {
+        writer_->flush();
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,42 @@
+# Helpers for the case-level tests (bash).  Each test works in its own folder,
+# $COAGULATIONFOAM_TEST_WORKDIR (set by CTest), starting from a tutorial.
+set -euo pipefail
+testsDir="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+# shellcheck source=/dev/null
+. "$testsDir/../../etc/functions"
+
+workDir="${COAGULATIONFOAM_TEST_WORKDIR:-$(mktemp -d)}"
+report="$COAGULATIONFOAM_PYTHON $COAGULATIONFOAM_DIR/applications/utilities/coagulationReport/coagulationReport.py"
+
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+# newCase tutorial dir: a fresh copy of a tutorial in $workDir/dir, with a mesh
+newCase()
+{
+    local dir="$workDir/$2"
+    rm -rf "$dir"
+    mkdir -p "$workDir"
+    cp -r "$COAGULATIONFOAM_DIR/tutorials/$1" "$dir"
+    (cd "$dir" && cleanCase && runApplication blockMesh)
+    echo "$dir"
+}
+
+# setEntry case file entry value
+setEntry()
+{
+    foamDictionary -case "$1" "$1/$2" -entry "$3" -set "$4" > /dev/null
+}
+
+# checkBalance log: the mass balance closes to round-off and no particle is lost
+checkBalance()
+{
+    local log="$1"
+    local err
+    err=$(grep "mass balance error" "$log" | tail -1 | awk '{print $NF}')
+    [ -n "$err" ] || fail "no mass balance line in $log"
+    awk -v e="$err" 'BEGIN { exit !(e < 1e-12 && e > -1e-12) }' \
+        || fail "mass balance error $err in $log"
+    grep "particle balance error" "$log" | awk '{ if ($NF != 0) exit 1 }' \
+        || fail "particle balance error in $log"
+    echo "mass balance error $err, particle balance exact"
+}
