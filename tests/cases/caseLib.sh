@@ -17,7 +17,7 @@ newCase()
     rm -rf "$dir"
     mkdir -p "$workDir"
     cp -r "$COAGULATIONFOAM_DIR/tutorials/$1" "$dir"
-    (cd "$dir" && cleanCase && runApplication blockMesh)
+    (cd "$dir" && cleanCase && runApplication blockMesh) >&2
     echo "$dir"
 }
 

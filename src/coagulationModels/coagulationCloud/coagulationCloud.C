@@ -471,10 +471,17 @@ void Foam::coagulationCloud::coagulate(const scalar dt)
         }
 
         reseed(celli, 0);
+        const uint64_t inceptionsBefore = stats.inceptions;
         (incepts ? algorithm_ : algorithmNoInception_)->advance
         (
             population_, dt, rng_, stats
         );
+
+        // Particles removed by coagulation (DSA), including any incepted
+        // and merged away within this step
+        removedByCoagulation_ +=
+            np + label(stats.inceptions - inceptionsBefore)
+          - label(population_.particles.size());
 
         // Write the cell's new state back into the cloud
         survived_.assign(np, 0);
@@ -501,7 +508,6 @@ void Foam::coagulationCloud::coagulate(const scalar dt)
             if (!survived_[i])
             {
                 this->deleteParticle(*cellParticles_[start + i]);
-                ++removedByCoagulation_;
             }
         }
     }
