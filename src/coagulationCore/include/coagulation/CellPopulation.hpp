@@ -1,0 +1,19 @@
+#ifndef COAGULATION_CELLPOPULATION_HPP
+#define COAGULATION_CELLPOPULATION_HPP
+
+#include "coagulation/Particle.hpp"
+
+#include <vector>
+
+namespace coag {
+
+//- One homogeneous cell: the density of physical particles is sum(weight)/volume.
+//  The volume is the "sample volume" n V_1 of the paper (DSA number control may change it).
+struct CellPopulation {
+    std::vector<Particle> particles;
+    double volume = 1.0;
+};
+
+} // namespace coag
+
+#endif

@@ -1,0 +1,43 @@
+#ifndef COAGULATION_MOMENTS_HPP
+#define COAGULATION_MOMENTS_HPP
+
+#include "coagulation/CellPopulation.hpp"
+
+#include <array>
+#include <cstddef>
+
+namespace coag {
+
+//- Mass moments M_k = sum_j w_j m_j^k / volume, k = 0..3 (Patterson & Wagner eq 37 with
+//  volume = n V_1).
+std::array<double, 4> moments(const CellPopulation& pop);
+
+//- Streaming mean/variance (Welford), mergeable (Chan, Golub & LeVeque).
+class RunningStatistics {
+public:
+    void add(double x);
+    std::size_t count() const { return n_; }
+    double mean() const { return mean_; }
+    //- Sample variance (n-1 denominator); 0 for fewer than two values.
+    double variance() const;
+    double standardDeviation() const;
+    //- Standard error of the mean, sqrt(variance/n); 0 for fewer than two values.
+    double standardError() const;
+    //- 1.96 * standardError().
+    double confidenceHalfWidth95() const;
+    //- Combine with the statistics of another, disjoint, sample (Chan et al.).
+    void merge(const RunningStatistics& other);
+    //- Sum of squared deviations from the mean.
+    double m2() const { return m2_; }
+    //- Restore a state (e.g. from a restart file); throws std::invalid_argument for m2 < 0.
+    void set(std::size_t n, double mean, double m2);
+
+private:
+    std::size_t n_ = 0;
+    double mean_ = 0.0;
+    double m2_ = 0.0;
+};
+
+} // namespace coag
+
+#endif

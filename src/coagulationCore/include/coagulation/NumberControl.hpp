@@ -1,0 +1,39 @@
+#ifndef COAGULATION_NUMBERCONTROL_HPP
+#define COAGULATION_NUMBERCONTROL_HPP
+
+#include <cstddef>
+
+namespace coag {
+
+//- Control of the number of computational particles in one cell.
+//
+//  maxParticles (0 = off): whenever the number N of computational particles exceeds it
+//  (checked at the start of CellAlgorithm::advance and after every inception), the cell is
+//  thinned by unbiased random halving: a uniformly random subset of exactly N/2 particles is
+//  kept (N odd: (N-1)/2 or (N+1)/2 with probability 1/2 each, so every particle survives with
+//  probability exactly 1/2), and
+//    - SWA: the weights of the survivors are doubled;
+//    - DSA1/DSA2 (weights must stay equal): the sample volume pop.volume is halved instead.
+//  Either way E[sum_j w_j phi(z_j) / V] is unchanged for every phi, so all moment estimators
+//  stay unbiased; the price is extra variance: a halving adds, for the estimator
+//  M_phi = sum_j w_j phi(z_j)/V, a conditional variance of sum_j (w_j phi(z_j)/V)^2 (roughly,
+//  the variance of a cell with half the particles), i.e. the statistical error after a
+//  halving is that of N/2 particles, never that of N.
+//
+//  minParticles (0 = off): in a closed DSA cell (inception rate 0) with 0 < N < minParticles
+//  (checked at the start of advance and after every coagulation) every particle is
+//  duplicated (the copies get tag -1 and the original's position) and the sample volume is
+//  doubled. This is exact for the empirical measure (no bias, no added variance at that
+//  moment), but the copies are correlated, so the variance keeps that of the population
+//  before doubling; it only stops the DSA cell from dying out. Ignored for SWA, whose
+//  coagulation never removes particles, and in cells with inception.
+//
+//  When both are on, maxParticles >= 2*minParticles is required (no ping-pong).
+struct NumberControl {
+    std::size_t maxParticles = 0;
+    std::size_t minParticles = 0;
+};
+
+} // namespace coag
+
+#endif

@@ -1,0 +1,22 @@
+#ifndef COAGULATION_COAGULATION_HPP
+#define COAGULATION_COAGULATION_HPP
+
+//- Umbrella header of the coagulationCore library (namespace coag). The public headers
+//  compile as C++14 as well, and none includes HDF5. The Eigen-based deterministic references
+//  (SmoluchowskiReference.hpp) are left out so that users need no Eigen include path;
+//  include that header directly where needed.
+#include "coagulation/CellAlgorithm.hpp"
+#include "coagulation/CellPopulation.hpp"
+#include "coagulation/CoagulationKernel.hpp"
+#include "coagulation/ExactSolutions.hpp"
+#include "coagulation/Inception.hpp"
+#include "coagulation/MomentSeriesFile.hpp"
+#include "coagulation/Moments.hpp"
+#include "coagulation/NanbuMethod.hpp"
+#include "coagulation/NumberControl.hpp"
+#include "coagulation/Particle.hpp"
+#include "coagulation/ParticleType.hpp"
+#include "coagulation/Rng.hpp"
+#include "coagulation/SumTree.hpp"
+
+#endif

@@ -1,0 +1,71 @@
+#include "coagulation/Moments.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace coag {
+
+std::array<double, 4> moments(const CellPopulation& pop)
+{
+    std::array<double, 4> m{0.0, 0.0, 0.0, 0.0};
+    for (const Particle& p : pop.particles) {
+        const double x = p.type.mass;
+        const double w = p.weight;
+        m[0] += w;
+        m[1] += w * x;
+        m[2] += w * x * x;
+        m[3] += w * x * x * x;
+    }
+    for (double& v : m) v /= pop.volume;
+    return m;
+}
+
+void RunningStatistics::add(double x)
+{
+    ++n_;
+    const double delta = x - mean_;
+    mean_ += delta / static_cast<double>(n_);
+    m2_ += delta * (x - mean_);
+}
+
+double RunningStatistics::variance() const
+{
+    return n_ < 2 ? 0.0 : m2_ / static_cast<double>(n_ - 1);
+}
+
+double RunningStatistics::standardDeviation() const { return std::sqrt(variance()); }
+
+double RunningStatistics::standardError() const
+{
+    return n_ < 2 ? 0.0 : std::sqrt(variance() / static_cast<double>(n_));
+}
+
+double RunningStatistics::confidenceHalfWidth95() const { return 1.96 * standardError(); }
+
+void RunningStatistics::merge(const RunningStatistics& o)
+{
+    if (o.n_ == 0) return;
+    if (n_ == 0) {
+        *this = o;
+        return;
+    }
+    const double na = static_cast<double>(n_);
+    const double nb = static_cast<double>(o.n_);
+    const double n = na + nb;
+    const double delta = o.mean_ - mean_;
+    mean_ += delta * nb / n;
+    m2_ += o.m2_ + delta * delta * na * nb / n;
+    n_ += o.n_;
+}
+
+void RunningStatistics::set(std::size_t n, double mean, double m2)
+{
+    if (!(m2 >= 0.0)) {
+        throw std::invalid_argument("coag::RunningStatistics::set: m2 must be >= 0");
+    }
+    n_ = n;
+    mean_ = n == 0 ? 0.0 : mean;
+    m2_ = n == 0 ? 0.0 : m2;
+}
+
+} // namespace coag

@@ -1,0 +1,104 @@
+#include "TestHelpers.hpp"
+
+#include <filesystem>
+
+using namespace coagtest;
+
+namespace {
+
+std::string tempFile(const std::string& name)
+{
+    const auto dir = std::filesystem::temp_directory_path() / "coagulationCoreTests";
+    std::filesystem::create_directories(dir);
+    const auto p = dir / name;
+    std::filesystem::remove(p);
+    return p.string();
+}
+
+} // namespace
+
+TEST(MomentSeriesFile, RoundTripWithSeveralAppends)
+{
+    const std::string path = tempFile("roundTrip.h5");
+    const std::vector<std::array<double, 3>> centres{{0.1, 0.2, 0.3}, {1.1, 1.2, 1.3}, {2.5, 0, -1}};
+    const int nm = 4;
+    auto value = [](std::size_t s, std::size_t c, int k) { return 1000.0 * s + 10.0 * c + k + 0.25; };
+    {
+        MomentSeriesWriter w(path, centres, nm);
+        w.setAttribute("algorithm", "SWA");
+        w.setAttribute("K0", 1e-5);
+        w.setAttribute("K0", 2e-5);  // overwrite
+        w.setAttribute("empty", std::string());
+        for (std::size_t s = 0; s < 7; ++s) {
+            std::vector<double> v(centres.size() * nm);
+            for (std::size_t c = 0; c < centres.size(); ++c)
+                for (int k = 0; k < nm; ++k) v[c * nm + static_cast<std::size_t>(k)] = value(s, c, k);
+            w.append(0.5 * double(s), v);
+            if (s == 3) w.flush();
+        }
+        EXPECT_EQ(w.nSamples(), 7u);
+        EXPECT_THROW(w.append(9.0, std::vector<double>(5)), std::invalid_argument);
+    }
+    MomentSeriesReader r(path);
+    EXPECT_EQ(r.nSamples(), 7u);
+    EXPECT_EQ(r.nCells(), 3u);
+    EXPECT_EQ(r.nMoments(), nm);
+    ASSERT_EQ(r.times().size(), 7u);
+    for (std::size_t s = 0; s < 7; ++s) EXPECT_EQ(r.times()[s], 0.5 * double(s));
+    for (std::size_t c = 0; c < 3; ++c)
+        for (int i = 0; i < 3; ++i) EXPECT_EQ(r.cellCentres()[c][i], centres[c][i]);
+    for (std::size_t s = 0; s < 7; ++s)
+        for (std::size_t c = 0; c < 3; ++c)
+            for (int k = 0; k < nm; ++k) EXPECT_EQ(r.value(s, c, k), value(s, c, k));
+    EXPECT_EQ(r.stringAttribute("algorithm"), "SWA");
+    EXPECT_EQ(r.numberAttribute("K0"), 2e-5);
+    EXPECT_EQ(r.stringAttribute("empty"), "");
+    EXPECT_TRUE(r.hasAttribute("algorithm"));
+    EXPECT_FALSE(r.hasAttribute("nothing"));
+    EXPECT_THROW(r.numberAttribute("algorithm"), std::invalid_argument);
+    EXPECT_THROW(r.stringAttribute("missing"), std::invalid_argument);
+    EXPECT_THROW(r.value(7, 0, 0), std::out_of_range);
+    EXPECT_THROW(r.value(0, 3, 0), std::out_of_range);
+    EXPECT_THROW(r.value(0, 0, 4), std::out_of_range);
+}
+
+TEST(MomentSeriesFile, ManyCellsAndSamplesCrossChunks)
+{
+    const std::string path = tempFile("large.h5");
+    const std::size_t nCells = 20000;
+    std::vector<std::array<double, 3>> centres(nCells);
+    for (std::size_t c = 0; c < nCells; ++c) centres[c] = {double(c), 0.0, 0.0};
+    {
+        MomentSeriesWriter w(path, centres, 2);
+        for (int s = 0; s < 70; ++s) {
+            std::vector<double> v(2 * nCells);
+            for (std::size_t i = 0; i < v.size(); ++i) v[i] = s * 1e6 + double(i);
+            w.append(double(s), v);
+        }
+    }
+    MomentSeriesReader r(path);
+    ASSERT_EQ(r.nSamples(), 70u);
+    ASSERT_EQ(r.nCells(), nCells);
+    EXPECT_EQ(r.value(69, nCells - 1, 1), 69e6 + double(2 * nCells - 1));
+    EXPECT_EQ(r.value(33, 1234, 0), 33e6 + 2468.0);
+}
+
+TEST(MomentSeriesFile, ZeroCellsIsAllowed)
+{
+    const std::string path = tempFile("empty.h5");
+    {
+        MomentSeriesWriter w(path, {}, 4);
+        w.append(1.0, {});
+        w.append(2.0, {});
+    }
+    MomentSeriesReader r(path);
+    EXPECT_EQ(r.nCells(), 0u);
+    EXPECT_EQ(r.nSamples(), 2u);
+    EXPECT_EQ(r.times()[1], 2.0);
+}
+
+TEST(MomentSeriesFile, MissingFileThrows)
+{
+    EXPECT_THROW(MomentSeriesReader("/nonexistent/dir/file.h5"), std::runtime_error);
+    EXPECT_THROW(MomentSeriesWriter("/nonexistent/dir/file.h5", {}, 4), std::runtime_error);
+}

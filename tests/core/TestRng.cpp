@@ -1,0 +1,126 @@
+#include "TestHelpers.hpp"
+
+using namespace coagtest;
+
+TEST(Rng, UniformIsInOpenUnitIntervalWithMeanHalf)
+{
+    Rng rng(1);
+    RunningStatistics s;
+    for (int i = 0; i < 200000; ++i) {
+        const double u = rng.uniform();
+        ASSERT_GT(u, 0.0);
+        ASSERT_LT(u, 1.0);
+        s.add(u);
+    }
+    EXPECT_NEAR(s.mean(), 0.5, 4 * s.standardError());
+    EXPECT_NEAR(s.variance(), 1.0 / 12.0, 2e-3);
+}
+
+TEST(Rng, ExponentialHasTheRequestedMean)
+{
+    Rng rng(2);
+    RunningStatistics s;
+    for (int i = 0; i < 200000; ++i) s.add(rng.exponential(4.0));
+    EXPECT_NEAR(s.mean(), 0.25, 4 * s.standardError());
+}
+
+TEST(Rng, UniformIndexCoversTheRangeEvenly)
+{
+    Rng rng(3);
+    const std::uint64_t n = 7;
+    std::vector<int> counts(n, 0);
+    const int draws = 70000;
+    for (int i = 0; i < draws; ++i) {
+        const std::uint64_t j = rng.uniformIndex(n);
+        ASSERT_LT(j, n);
+        ++counts[j];
+    }
+    const double p = 1.0 / 7.0, sd = std::sqrt(draws * p * (1 - p));
+    for (int c : counts) EXPECT_NEAR(c, draws * p, 4.5 * sd);
+    EXPECT_EQ(rng.uniformIndex(1), 0u);
+    EXPECT_THROW(rng.uniformIndex(0), std::invalid_argument);
+}
+
+TEST(Rng, StateSaveRestoreReproducesTheSequence)
+{
+    Rng rng(42);
+    for (int i = 0; i < 1000; ++i) rng.uniform();
+    const std::string saved = rng.state();
+    std::vector<double> a;
+    for (int i = 0; i < 100; ++i) a.push_back(rng.uniform());
+    std::vector<std::uint64_t> ai;
+    for (int i = 0; i < 10; ++i) ai.push_back(rng.uniformIndex(1000));
+
+    Rng other(7);
+    other.setState(saved);
+    for (int i = 0; i < 100; ++i) EXPECT_EQ(other.uniform(), a[i]);
+    for (int i = 0; i < 10; ++i) EXPECT_EQ(other.uniformIndex(1000), ai[i]);
+    EXPECT_EQ(other.state(), rng.state());
+    EXPECT_THROW(other.setState("not a state"), std::invalid_argument);
+}
+
+TEST(Rng, DifferentSeedsDiffer)
+{
+    Rng a(1), b(2);
+    EXPECT_NE(a.uniform(), b.uniform());
+}
+
+namespace {
+
+CellPopulation runOnce(const std::string& alg, std::uint64_t seed, std::string* endState = nullptr)
+{
+    AdditiveKernel kernel(1.0);
+    InceptionModel inception;
+    inception.rate = 2.0;
+    auto a = makeCellAlgorithm(alg, kernel, inception);
+    Rng rng(seed);
+    CellPopulation pop = monodisperse(500, 500.0);
+    StepStatistics stats;
+    for (int i = 0; i < 5; ++i) a->advance(pop, 0.1, rng, stats);
+    if (endState) *endState = rng.state();
+    return pop;
+}
+
+void expectIdentical(const CellPopulation& a, const CellPopulation& b)
+{
+    ASSERT_EQ(a.particles.size(), b.particles.size());
+    EXPECT_EQ(a.volume, b.volume);
+    for (std::size_t j = 0; j < a.particles.size(); ++j) {
+        EXPECT_EQ(a.particles[j].type.mass, b.particles[j].type.mass);
+        EXPECT_EQ(a.particles[j].weight, b.particles[j].weight);
+        EXPECT_EQ(a.particles[j].tag, b.particles[j].tag);
+    }
+}
+
+} // namespace
+
+TEST(Rng, SameSeedGivesIdenticalResults)
+{
+    for (const std::string alg : {"SWA", "DSA1", "DSA2"}) {
+        std::string s1, s2;
+        const CellPopulation a = runOnce(alg, 99, &s1);
+        const CellPopulation b = runOnce(alg, 99, &s2);
+        expectIdentical(a, b);
+        EXPECT_EQ(s1, s2);
+        const CellPopulation c = runOnce(alg, 100);
+        EXPECT_NE(moments(a)[2], moments(c)[2]) << alg;
+    }
+}
+
+TEST(Rng, RestoredStateContinuesARunIdentically)
+{
+    ConstantKernel kernel(1.0);
+    auto alg = makeCellAlgorithm("SWA", kernel, InceptionModel{1.0, {}, 1.0});
+    Rng rng(5);
+    CellPopulation pop = monodisperse(300, 300.0);
+    StepStatistics stats;
+    alg->advance(pop, 0.3, rng, stats);
+    const std::string state = rng.state();
+    CellPopulation copy = pop;
+    alg->advance(pop, 0.3, rng, stats);
+
+    Rng restored(0);
+    restored.setState(state);
+    alg->advance(copy, 0.3, restored, stats);
+    expectIdentical(pop, copy);
+}
