@@ -41,5 +41,7 @@ expectFatal missingSeed        "seed"             -entry seed -remove
 expectFatal negativeSeed       "seed"             -entry seed -set -5
 expectFatal missingSampling    "sampling"         -entry sampling -remove
 expectFatal badSampleInterval  "sampleInterval"   -entry sampling/sampleInterval -set 1.5e-4
+(cd "$base" && foamDictionary constant/coagulationProperties -entry algorithm -set DSA1 > /dev/null)
+expectFatal dsaNumberControl   "maxParticlesPerCell" -entry numberControl -set "{ maxParticlesPerCell 100; }"
 
 echo "PASS bad input: $passed cases give a FatalIOError naming the entry"

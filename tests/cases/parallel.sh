@@ -23,6 +23,7 @@ serial=$(newCase constantKernelDuct parallel_serial)
 cp constant/coagulationProperties "$serial/constant/coagulationProperties"
 cp system/controlDict "$serial/system/controlDict"
 cd "$serial"
+setEntry . constant/coagulationProperties seed 2     # an independent realisation
 runApplication coagulationFoam
 $report --case . --out results --no-plots > log.report || fail "serial report failed"
 "$COAGULATIONFOAM_PYTHON" - "$case/results/moments.csv" "$serial/results/moments.csv" <<'PY' || fail "parallel and serial moments differ"

@@ -334,7 +334,7 @@ Foam::coagulationCloud::coagulationCloud
     inflowDensity_(0),
     inflowMass_(1),
     moments_(4),
-    removedByCoagulation_(0),
+    removedInCells_(0),
     events_(),
     cellStart_(),
     cellParticles_(),
@@ -392,6 +392,17 @@ Foam::coagulationCloud::coagulationCloud
 
     algorithm_ =
         cellAlgorithm::New(properties_, *kernel_, inception_, control);
+
+    // DSA halving would halve a cell's sample volume, but a mesh cell's
+    // volume is fixed: number control is for weighted particles only
+    if (algorithm_->equalWeights() && control.maxParticles > 0)
+    {
+        FatalIOErrorInFunction(properties_)
+            << "Entry 'numberControl/maxParticlesPerCell' in "
+            << properties_.name() << " needs weighted particles (SWA); "
+            << properties_.get<word>("algorithm")
+            << " keeps all weights equal" << nl << exit(FatalIOError);
+    }
 
     coag::InceptionModel noInception(inception_);
     noInception.rate = 0;
@@ -477,9 +488,9 @@ void Foam::coagulationCloud::coagulate(const scalar dt)
             population_, dt, rng_, stats
         );
 
-        // Particles removed by coagulation (DSA), including any incepted
-        // and merged away within this step
-        removedByCoagulation_ +=
+        // Particles removed in the cell: DSA merges (including any incepted
+        // and merged away within this step) and number-control halvings
+        removedInCells_ +=
             np + label(stats.inceptions - inceptionsBefore)
           - label(population_.particles.size());
 
@@ -601,7 +612,7 @@ Foam::label Foam::coagulationCloud::particleBalanceError() const
 {
     label change =
         inflow_.particles + incepted_.particles - outflow_.particles
-      - removedByCoagulation_;
+      - removedInCells_;
     reduce(change, sumOp<label>());
 
     return domainContent().particles - initial_.particles - change;
