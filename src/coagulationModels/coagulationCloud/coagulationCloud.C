@@ -137,10 +137,10 @@ void Foam::coagulationCloud::sortByCell()
     }
 
     cellParticles_.setSize(this->size());
-    labelList next(SubList<label>(cellStart_, nCells));
+    cellNext_ = SubList<label>(cellStart_, nCells);
     for (coagulationParticle& p : *this)
     {
-        cellParticles_[next[p.cell()]++] = &p;
+        cellParticles_[cellNext_[p.cell()]++] = &p;
     }
 }
 
@@ -159,17 +159,19 @@ Foam::coagulationCloud::newParticleInCell
     const List<tetIndices> tets =
         polyMeshTetDecomposition::cellTetIndices(mesh_, celli);
 
+    tetVolumes_.setSize(tets.size());
     scalar total = 0;
-    for (const tetIndices& tet : tets)
+    forAll(tets, i)
     {
-        total += tet.tet(mesh_).mag();
+        tetVolumes_[i] = tets[i].tet(mesh_).mag();
+        total += tetVolumes_[i];
     }
 
     scalar target = rng_.uniform()*total;
     label chosen = tets.size() - 1;
     forAll(tets, i)
     {
-        target -= tets[i].tet(mesh_).mag();
+        target -= tetVolumes_[i];
         if (target <= 0)
         {
             chosen = i;
@@ -337,7 +339,9 @@ Foam::coagulationCloud::coagulationCloud
     removedInCells_(0),
     events_(),
     cellStart_(),
+    cellNext_(),
     cellParticles_(),
+    tetVolumes_(),
     population_(),
     survived_(),
     rng_(0)
