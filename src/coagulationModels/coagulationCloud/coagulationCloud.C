@@ -286,6 +286,18 @@ void Foam::coagulationCloud::injectInflow
 }
 
 
+Foam::coagulationCloud::balance Foam::coagulationCloud::incepted() const
+{
+    balance b;
+    b.particles = label(events_.inceptions);
+    b.number = events_.inceptions*particleWeight_;
+    // Every incepted particle has the same type and weight: the product is
+    // exact where a running sum over millions of events would drift
+    b.mass = events_.inceptions*particleWeight_*inception_.type.mass;
+    return b;
+}
+
+
 Foam::coagulationCloud::balance Foam::coagulationCloud::domainContent() const
 {
     balance b;
@@ -459,7 +471,6 @@ void Foam::coagulationCloud::coagulate(const scalar dt)
     const label nCells = mesh_.nCells();
     const bool hasInception = inception_.rate > 0;
 
-    coag::StepStatistics stats;
 
     for (label celli = 0; celli < nCells; ++celli)
     {
@@ -486,16 +497,16 @@ void Foam::coagulationCloud::coagulate(const scalar dt)
         }
 
         reseed(celli, 0);
-        const uint64_t inceptionsBefore = stats.inceptions;
+        const uint64_t inceptionsBefore = events_.inceptions;
         (incepts ? algorithm_ : algorithmNoInception_)->advance
         (
-            population_, dt, rng_, stats
+            population_, dt, rng_, events_
         );
 
         // Particles removed in the cell: DSA merges (including any incepted
         // and merged away within this step) and number-control halvings
         removedInCells_ +=
-            np + label(stats.inceptions - inceptionsBefore)
+            np + label(events_.inceptions - inceptionsBefore)
           - label(population_.particles.size());
 
         // Write the cell's new state back into the cloud
@@ -527,16 +538,6 @@ void Foam::coagulationCloud::coagulate(const scalar dt)
         }
     }
 
-    incepted_.particles += label(stats.inceptions);
-    incepted_.number += stats.inceptions*particleWeight_;
-    incepted_.mass += stats.inceptedMass;
-
-    events_.coagulations += stats.coagulations;
-    events_.fictitious += stats.fictitious;
-    events_.inceptions += stats.inceptions;
-    events_.halvings += stats.halvings;
-    events_.doublings += stats.doublings;
-    events_.inceptedMass += stats.inceptedMass;
 }
 
 
@@ -598,7 +599,7 @@ void Foam::coagulationCloud::updateMoments()
 Foam::scalar Foam::coagulationCloud::massBalanceError() const
 {
     balance in(initial_);
-    balance inflow(inflow_), incepted(incepted_), outflow(outflow_);
+    balance inflow(inflow_), incepted(this->incepted()), outflow(outflow_);
     reduce(inflow.mass, sumOp<scalar>());
     reduce(incepted.mass, sumOp<scalar>());
     reduce(outflow.mass, sumOp<scalar>());
@@ -615,7 +616,7 @@ Foam::scalar Foam::coagulationCloud::massBalanceError() const
 Foam::label Foam::coagulationCloud::particleBalanceError() const
 {
     label change =
-        inflow_.particles + incepted_.particles - outflow_.particles
+        inflow_.particles + incepted().particles - outflow_.particles
       - removedInCells_;
     reduce(change, sumOp<label>());
 
@@ -625,7 +626,7 @@ Foam::label Foam::coagulationCloud::particleBalanceError() const
 
 void Foam::coagulationCloud::report() const
 {
-    balance inflow(inflow_), incepted(incepted_), outflow(outflow_);
+    balance inflow(inflow_), incepted(this->incepted()), outflow(outflow_);
     reduce(inflow.mass, sumOp<scalar>());
     reduce(incepted.mass, sumOp<scalar>());
     reduce(outflow.mass, sumOp<scalar>());
