@@ -3,22 +3,9 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace coag {
-
-namespace {
-
-double checkedK0(const char* kernel, double K0)
-{
-    if (!(K0 > 0.0) || !std::isfinite(K0)) {
-        std::ostringstream os;
-        os << "coag::" << kernel << "Kernel: K0 must be positive and finite, got " << K0;
-        throw std::invalid_argument(os.str());
-    }
-    return K0;
-}
-
-} // namespace
 
 double CoagulationKernel::majorant(const ParticleType& a, const ParticleType& b) const
 {
@@ -42,21 +29,29 @@ double CoagulationKernel::majorant(const ParticleType& a, const ParticleType& b)
     return sum;
 }
 
-ConstantKernel::ConstantKernel(double K0)
-    : K0_(checkedK0("Constant", K0)), terms_{{K0_, 0, 0}}
-{}
+ScaledKernel::ScaledKernel(const char* kernel, double K0, std::vector<MajorantTerm> unitTerms)
+    : K0_(K0), terms_(std::move(unitTerms))
+{
+    if (!(K0 > 0.0) || !std::isfinite(K0)) {
+        std::ostringstream os;
+        os << "coag::" << kernel << "Kernel: K0 must be positive and finite, got " << K0;
+        throw std::invalid_argument(os.str());
+    }
+    for (MajorantTerm& t : terms_) t.coeff *= K0_;
+}
+
+ConstantKernel::ConstantKernel(double K0) : ScaledKernel("Constant", K0, {{1.0, 0, 0}}) {}
 
 AdditiveKernel::AdditiveKernel(double K0)
-    : K0_(checkedK0("Additive", K0)), terms_{{K0_, 1, 0}, {K0_, 0, 1}}
+    : ScaledKernel("Additive", K0, {{1.0, 1, 0}, {1.0, 0, 1}})
 {}
 
 MultiplicativeKernel::MultiplicativeKernel(double K0)
-    : K0_(checkedK0("Multiplicative", K0)), terms_{{K0_, 0, 0}}
+    : ScaledKernel("Multiplicative", K0, {{1.0, 0, 0}})
 {}
 
 SaffmanTurnerKernel::SaffmanTurnerKernel(double K0)
-    : K0_(checkedK0("SaffmanTurner", K0)),
-      terms_{{K0_, 1, 0}, {3.0 * K0_, 3, 2}, {3.0 * K0_, 2, 3}, {K0_, 0, 1}}
+    : ScaledKernel("SaffmanTurner", K0, {{1.0, 1, 0}, {3.0, 3, 2}, {3.0, 2, 3}, {1.0, 0, 1}})
 {}
 
 double SaffmanTurnerKernel::operator()(const ParticleType& a, const ParticleType& b) const

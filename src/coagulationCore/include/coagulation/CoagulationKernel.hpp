@@ -37,25 +37,36 @@ public:
     double majorant(const ParticleType& a, const ParticleType& b) const;
 };
 
+//- The kernels below: K0 times a fixed shape, whose product-sum majorant is the shape's
+//  own terms scaled by K0. Holds and checks K0 (> 0, finite) and the scaled terms.
+class ScaledKernel : public CoagulationKernel {
+public:
+    const std::vector<MajorantTerm>& majorantTerms() const override { return terms_; }
+    double K0() const { return K0_; }
+
+protected:
+    //- unitTerms: the majorant terms for K0 = 1
+    ScaledKernel(const char* kernel, double K0, std::vector<MajorantTerm> unitTerms);
+
+    double K0_;
+
+private:
+    std::vector<MajorantTerm> terms_;
+};
+
 //- K = K0.
-class ConstantKernel : public CoagulationKernel {
+class ConstantKernel : public ScaledKernel {
 public:
     explicit ConstantKernel(double K0);
     std::string name() const override { return "constant"; }
     double operator()(const ParticleType&, const ParticleType&) const override { return K0_; }
     int nBasis() const override { return 1; }
     void basis(const ParticleType&, double* phi) const override { phi[0] = 1.0; }
-    const std::vector<MajorantTerm>& majorantTerms() const override { return terms_; }
     bool constantBasis(int b) const override { return b == 0; }
-    double K0() const { return K0_; }
-
-private:
-    double K0_;
-    std::vector<MajorantTerm> terms_;
 };
 
 //- K = K0 (x + y), x, y the masses (Golovin). Basis {1, x}.
-class AdditiveKernel : public CoagulationKernel {
+class AdditiveKernel : public ScaledKernel {
 public:
     explicit AdditiveKernel(double K0);
     std::string name() const override { return "additive"; }
@@ -69,17 +80,11 @@ public:
         phi[0] = 1.0;
         phi[1] = z.mass;
     }
-    const std::vector<MajorantTerm>& majorantTerms() const override { return terms_; }
     bool constantBasis(int b) const override { return b == 0; }
-    double K0() const { return K0_; }
-
-private:
-    double K0_;
-    std::vector<MajorantTerm> terms_;
 };
 
 //- K = K0 x y. Basis {x}.
-class MultiplicativeKernel : public CoagulationKernel {
+class MultiplicativeKernel : public ScaledKernel {
 public:
     explicit MultiplicativeKernel(double K0);
     std::string name() const override { return "multiplicative"; }
@@ -89,32 +94,20 @@ public:
     }
     int nBasis() const override { return 1; }
     void basis(const ParticleType& z, double* phi) const override { phi[0] = z.mass; }
-    const std::vector<MajorantTerm>& majorantTerms() const override { return terms_; }
-    double K0() const { return K0_; }
-
-private:
-    double K0_;
-    std::vector<MajorantTerm> terms_;
 };
 
 //- Saffman–Turner turbulent kernel K = K0 (x^{1/3} + y^{1/3})^3 (Kolodko–Sabelfeld–Wagner
 //  eq 1.2 with K0 = (pi^2 eps / 120 nu)^{1/2} V1; K0 = 1/8 gives K11 = 1).
 //  Exact product-sum form x + 3 x^{2/3} y^{1/3} + 3 x^{1/3} y^{2/3} + y with basis
 //  {1, x, x^{1/3}, x^{2/3}}.
-class SaffmanTurnerKernel : public CoagulationKernel {
+class SaffmanTurnerKernel : public ScaledKernel {
 public:
     explicit SaffmanTurnerKernel(double K0);
     std::string name() const override { return "saffmanTurner"; }
     double operator()(const ParticleType& a, const ParticleType& b) const override;
     int nBasis() const override { return 4; }
     void basis(const ParticleType& z, double* phi) const override;
-    const std::vector<MajorantTerm>& majorantTerms() const override { return terms_; }
     bool constantBasis(int b) const override { return b == 0; }
-    double K0() const { return K0_; }
-
-private:
-    double K0_;
-    std::vector<MajorantTerm> terms_;
 };
 
 //- "constant", "additive", "multiplicative", "saffmanTurner"; unknown name or K0 <= 0
