@@ -24,23 +24,9 @@
 set -u
 
 HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-ROOT=$(cd "$HERE/../.." && pwd)
+# shellcheck source=/dev/null
+. "$HERE/selfTestLib.sh" coagulationTablesTest
 TABLES="$ROOT/applications/utilities/coagulationTables/coagulationTables.py"
-PY=/usr/bin/python3
-
-pass=0
-fail=0
-ok() { pass=$((pass + 1)); echo "PASS: $1"; }
-ko() { fail=$((fail + 1)); echo "FAIL: $1"; }
-finish() { echo "$pass passed, $fail failed"; [ "$fail" -eq 0 ]; exit $?; }
-
-if ! "$PY" -c "import numpy, h5py, scipy, matplotlib" 2>/dev/null; then
-    ko "$PY cannot import numpy, h5py, scipy and matplotlib"
-    finish
-fi
-
-TMP=$(mktemp -d "${TMPDIR:-/tmp}/coagulationTablesTest.XXXXXX")
-trap 'rm -rf "$TMP"' EXIT
 
 # ---------------------------------------------------------------- synthetic data generator
 cat > "$TMP/make_rows.py" <<'EOF'

@@ -1,0 +1,19 @@
+# Shared set-up of the Python tools' self-tests (bash, sourced): PASS/FAIL counters, the
+# interpreter check and a temporary folder removed on exit.
+#   . selfTestLib.sh NAME      then ok/ko "message" ...; finish
+ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+PY=/usr/bin/python3
+
+pass=0
+fail=0
+ok() { pass=$((pass + 1)); echo "PASS: $1"; }
+ko() { fail=$((fail + 1)); echo "FAIL: $1"; }
+finish() { echo "$pass passed, $fail failed"; [ "$fail" -eq 0 ]; exit $?; }
+
+if ! "$PY" -c "import numpy, h5py, scipy, matplotlib" 2>/dev/null; then
+    ko "$PY cannot import numpy, h5py, scipy and matplotlib"
+    finish
+fi
+
+TMP=$(mktemp -d "${TMPDIR:-/tmp}/$1.XXXXXX")
+trap 'rm -rf "$TMP"' EXIT
