@@ -10,6 +10,15 @@ ok() { pass=$((pass + 1)); echo "PASS: $1"; }
 ko() { fail=$((fail + 1)); echo "FAIL: $1"; }
 finish() { echo "$pass passed, $fail failed"; [ "$fail" -eq 0 ]; exit $?; }
 
+# run_expect DESCRIPTION EXPECTED_RC LOG -- command...
+run_expect() {
+    local desc=$1 want=$2 log=$3; shift 4
+    "$@" > "$log" 2>&1
+    local rc=$?
+    if [ "$rc" -eq "$want" ]; then ok "$desc (exit $rc)"; else
+        ko "$desc: exit $rc, expected $want; output tail:"; tail -n 15 "$log" | sed 's/^/    /'; fi
+}
+
 if ! "$PY" -c "import numpy, h5py, scipy, matplotlib" 2>/dev/null; then
     ko "$PY cannot import numpy, h5py, scipy and matplotlib"
     finish

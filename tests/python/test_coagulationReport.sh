@@ -97,15 +97,6 @@ EOF
 
 mk() { "$PY" "$TMP/make_case.py" --tooldir "$TOOLDIR" "$@"; }
 
-# run_expect DESCRIPTION EXPECTED_RC LOG -- command...
-run_expect() {
-    local desc=$1 want=$2 log=$3; shift 4
-    "$@" > "$log" 2>&1
-    local rc=$?
-    if [ "$rc" -eq "$want" ]; then ok "$desc (exit $rc)"; else
-        ko "$desc: exit $rc, expected $want; output tail:"; tail -n 15 "$log" | sed 's/^/    /'; fi
-}
-
 # ---------------------------------------------------------------- analyticDuct
 if "$PY" - "$TOOLDIR" <<'EOF'
 import sys

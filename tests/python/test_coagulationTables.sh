@@ -166,15 +166,6 @@ for line in sys.stdin:
         make(ap.parse_args(shlex.split(line)))
 EOF
 
-# run_expect DESCRIPTION EXPECTED_RC LOG -- command...
-run_expect() {
-    local desc=$1 want=$2 log=$3; shift 4
-    "$@" > "$log" 2>&1
-    local rc=$?
-    if [ "$rc" -eq "$want" ]; then ok "$desc (exit $rc)"; else
-        ko "$desc: exit $rc, expected $want; output tail:"; tail -n 15 "$log" | sed 's/^/    /'; fi
-}
-
 # expect_grep DESCRIPTION LOG PATTERN: a line of LOG matches the extended regex PATTERN
 expect_grep() {
     if grep -Eq -- "$3" "$2"; then ok "$1"; else
