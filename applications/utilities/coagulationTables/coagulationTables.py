@@ -211,6 +211,13 @@ def table_cell(row, x):
     return int(inside[-1])
 
 
+def cell_label(row, i):
+    lo, hi = row["edges"]
+    if lo is None:
+        return "cell centre x = %s" % fmt(float(row["x"][i]), 4)
+    return "cell [%s, %s]" % (fmt(float(lo[i]), 4), fmt(float(hi[i]), 4))
+
+
 def se_of(row, i, k):
     """Standard error of the row mean: from realisation means when R >= 3."""
     if row["R"] >= 3 and np.isfinite(row["seR"][i, k]):
@@ -251,11 +258,8 @@ def write_tables(rows, table_rows, x, out):
                 lines.append((r, i, paper))
         written.append(os.path.join(out, name + ".csv"))
         e = int(round(math.log10(unit)))
-        md = ["# %s: confidence intervals for the mean of M_{n,%d}, cell [%s, %s]"
-              % ("Table %d" % k, k, fmt(float(lines[0][0]["edges"][0][lines[0][1]]), 4)
-                 if lines and lines[0][0]["edges"][0] is not None else "?",
-                 fmt(float(lines[0][0]["edges"][1][lines[0][1]]), 4)
-                 if lines and lines[0][0]["edges"][1] is not None else "?"),
+        md = ["# Table %d: confidence intervals for the mean of M_{n,%d}, %s"
+              % (k, k, cell_label(lines[0][0], lines[0][1]) if lines else "no row"),
               "",
               "Units: 1e%d. `ci95` = 1.96 sd/sqrt(samples), the paper's half-width; `ci95 (R)` from "
               "the R independent realisation means (Student t). Paper columns: Patterson & Wagner, "
