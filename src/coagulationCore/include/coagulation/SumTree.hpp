@@ -46,29 +46,19 @@ public:
     void rebuild();
 
     //- Recompute the ancestors of leaf j (all columns): O(levels * columns).
-    //  Each column walks up on its own, carrying the new sum of the level below in a register
-    //  and substituting it for its (stale) slot while the parent node is summed, before the
-    //  slot is stored. The node is thus read before it is written: no load has to wait for the
-    //  store just made to the same cache line (a wide load of a freshly stored slot cannot be
-    //  forwarded from the store buffer and stalls), and the columns' chains run in parallel.
-    //  The sums and their association are exactly those of rebuild().
     void update(std::size_t j)
     {
+        std::size_t idx = j;
         const std::size_t nLevels = levelOffset_.size();
-        const std::size_t* offset = levelOffset_.data();
-        for (std::size_t c = 0; c < ncol_; ++c) {
-            std::size_t node = j >> 3;
-            double sum = nodeSum(base_ + offset[0] + node * blockSize_ + c * fanOut);
-            for (std::size_t l = 1; l < nLevels; ++l) {
-                double* parent = base_ + offset[l] + (node >> 3) * blockSize_ + c * fanOut;
-                const std::size_t slot = node & 7;
-                const double up = nodeSumWith(parent, slot, sum);
-                parent[slot] = sum;
-                sum = up;
-                node >>= 3;
-            }
-            totals_[c] = sum;
+        for (std::size_t l = 0; l + 1 < nLevels; ++l) {
+            const std::size_t node = idx >> 3;
+            const double* child = base_ + levelOffset_[l] + node * blockSize_;
+            double* parent = base_ + levelOffset_[l + 1] + (node >> 3) * blockSize_ + (node & 7);
+            for (std::size_t c = 0; c < ncol_; ++c) parent[c * fanOut] = nodeSum(child + c * fanOut);
+            idx = node;
         }
+        const double* root = base_ + levelOffset_[nLevels - 1];
+        for (std::size_t c = 0; c < ncol_; ++c) totals_[c] = nodeSum(root + c * fanOut);
     }
 
     //- Sum of column c over all leaves.
@@ -143,19 +133,6 @@ private:
     static double nodeSum(const double* v)
     {
         return ((v[0] + v[1]) + (v[2] + v[3])) + ((v[4] + v[5]) + (v[6] + v[7]));
-    }
-    //- nodeSum(v) with v[slot] replaced by x (branch-free selects, same association)
-    static double nodeSumWith(const double* v, std::size_t slot, double x)
-    {
-        const double v0 = slot == 0 ? x : v[0];
-        const double v1 = slot == 1 ? x : v[1];
-        const double v2 = slot == 2 ? x : v[2];
-        const double v3 = slot == 3 ? x : v[3];
-        const double v4 = slot == 4 ? x : v[4];
-        const double v5 = slot == 5 ? x : v[5];
-        const double v6 = slot == 6 ? x : v[6];
-        const double v7 = slot == 7 ? x : v[7];
-        return ((v0 + v1) + (v2 + v3)) + ((v4 + v5) + (v6 + v7));
     }
     std::size_t leafIndex(std::size_t j, std::size_t c) const
     {
