@@ -53,10 +53,10 @@ private:
     {
         if (nTreeColumns_ == 0) return;
         kernel_.basis(p.type, phi_.data());
-        for (const Column& col : columns_) {
-            if (col.uniform) continue;
-            const double v = phi_[static_cast<std::size_t>(col.basis)];
-            tree_.set(j, col.tree, col.weighted ? v * p.weight : v);
+        // Runs once per event: only the tree columns, in tree-column order
+        for (std::size_t c = 0; c < nTreeColumns_; ++c) {
+            const double v = phi_[treeBasis_[c]];
+            tree_.set(j, c, treeWeighted_[c] ? v * p.weight : v);
         }
     }
 
@@ -97,6 +97,8 @@ private:
 
     std::vector<Column> columns_;
     std::size_t nTreeColumns_ = 0;
+    std::vector<std::size_t> treeBasis_;  // per tree column: its basis function
+    std::vector<char> treeWeighted_;      // per tree column: phi * w
     std::vector<double> termCoeff_;
     std::vector<std::size_t> termFirst_;   // column of phi_first
     std::vector<std::size_t> termSecond_;  // column of phi_second (* w for SWA)
@@ -136,7 +138,11 @@ ParticleCellAlgorithm::ParticleCellAlgorithm(Mode mode, const CoagulationKernel&
                                         + "' declares a constant basis function that is not "
                                           "positive");
         }
-        if (!col.uniform) col.tree = nTreeColumns_++;
+        if (!col.uniform) {
+            col.tree = nTreeColumns_++;
+            treeBasis_.push_back(static_cast<std::size_t>(b));
+            treeWeighted_.push_back(weighted);
+        }
         columns_.push_back(col);
         return columns_.size() - 1;
     };

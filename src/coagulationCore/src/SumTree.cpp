@@ -27,6 +27,7 @@ void SumTree::reset(std::size_t nColumns, std::size_t capacity)
     const std::size_t shift = ((64 - addr % 64) % 64) / sizeof(double);
     base_ = storage_.data() + shift;
     totals_.assign(ncol_, 0.0);
+    prefetch_ = offset * sizeof(double) > prefetchBytes;
 }
 
 void SumTree::rebuild()

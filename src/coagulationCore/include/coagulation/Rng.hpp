@@ -22,8 +22,23 @@ public:
     //- Exponentially distributed with the given rate (> 0).
     double exponential(double rate) { return -std::log(uniform()) / rate; }
 
-    //- Uniform on {0, ..., n-1}, unbiased (Lemire's method); n must be > 0.
-    std::uint64_t uniformIndex(std::uint64_t n);
+    //- Uniform on {0, ..., n-1}, unbiased (Lemire, "Fast random integer generation in an
+    //  interval", 2019); n must be > 0. Inline: it is drawn in the inner event loops.
+    std::uint64_t uniformIndex(std::uint64_t n)
+    {
+        if (n == 0) throwZeroRange();
+        __extension__ typedef unsigned __int128 uint128;
+        uint128 m = static_cast<uint128>(engine_()) * n;
+        std::uint64_t low = static_cast<std::uint64_t>(m);
+        if (low < n) {
+            const std::uint64_t threshold = (0 - n) % n;
+            while (low < threshold) {
+                m = static_cast<uint128>(engine_()) * n;
+                low = static_cast<std::uint64_t>(m);
+            }
+        }
+        return static_cast<std::uint64_t>(m >> 64);
+    }
 
     //- Full generator state as text (std::mt19937_64 stream format).
     std::string state() const;
@@ -34,6 +49,8 @@ public:
     std::mt19937_64& engine() { return engine_; }
 
 private:
+    [[noreturn]] static void throwZeroRange();
+
     std::mt19937_64 engine_;
 };
 
