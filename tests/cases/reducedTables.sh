@@ -7,7 +7,7 @@
 . "$(dirname "$0")/caseLib.sh"
 
 out="$workDir/study"
-rm -rf "$out"
+rm -rf "$out" "$workDir/log.study" "$workDir/log.tables"
 mkdir -p "$workDir"
 # rows: SWA n = 512 (8 realisations), 1024 (4) over [0.2, 0.4]; DSA1 n = 256 (8) over
 # [0.2, 2.0]; DSA2 n = 256 (8), 512 (4) over [0.2, 1.0]
