@@ -113,13 +113,9 @@ class TablesError(Exception):
 # --------------------------------------------------------------------------- rows
 
 def student_t975(dof):
-    """97.5 % quantile of Student's t (two-sided 95 %)."""
-    try:
-        from scipy.stats import t
-        return float(t.ppf(0.975, dof))
-    except ImportError:  # Cornish-Fisher style approximation, good to 1e-3 for dof >= 2
-        z = 1.959964
-        return z + (z ** 3 + z) / (4 * dof) + (5 * z ** 5 + 16 * z ** 3 + 3 * z) / (96 * dof ** 2)
+    """97.5 % quantile of Student's t (two-sided 95 %); scipy is a bootstrap dependency."""
+    from scipy.stats import t
+    return float(t.ppf(0.975, dof))
 
 
 def realisation_dirs(row_dir):
