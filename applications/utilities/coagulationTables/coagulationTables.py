@@ -294,12 +294,14 @@ def write_tables(rows, table_rows, x, out):
     with open(p, "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["method", "kernel", "n", "V1", "realisations", "tStart", "tEnd",
-                    "wallSeconds", "cpuSeconds", "jobs", "ranksPerRealisation", "folder"])
+                    "wallSeconds", "cpuSeconds", "jobs", "ranksPerRealisation",
+                    "threadsPerRank", "folder"])
         for r in all_rows:
             t = r["timing"]
             w.writerow([r["method"], r["kernel"], r["n"], fmt(r["V1"]), r["R"], fmt(r["window"][0]),
                         fmt(r["window"][1]), fmt(t.get("wallSeconds")), fmt(t.get("cpuSeconds")),
-                        t.get("jobs", ""), t.get("ranksPerRealisation", ""), r["dir"]])
+                        t.get("jobs", ""), t.get("ranksPerRealisation", ""),
+                        t.get("threadsPerRank", 1), r["dir"]])
     written.append(p)
     return written
 

@@ -10,6 +10,12 @@
 #include "processorPolyPatch.H"
 
 #include <random>
+#include <cstdlib>
+#include <string>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -110,14 +116,24 @@ void Foam::coagulationCloud::readInflow(const dictionary& dict)
 }
 
 
-void Foam::coagulationCloud::reseed(const label index, const label purpose)
+uint64_t Foam::coagulationCloud::streamSeed
+(
+    const label index,
+    const label purpose
+) const
 {
     uint64_t s = mix64(seed_);
     s = mix64(s ^ uint64_t(Pstream::myProcNo()));
     s = mix64(s ^ uint64_t(index));
     s = mix64(s ^ uint64_t(mesh_.time().timeIndex()));
     s = mix64(s ^ uint64_t(purpose));
-    rng_.engine().seed(s);
+    return s;
+}
+
+
+void Foam::coagulationCloud::reseed(const label index, const label purpose)
+{
+    rng_.engine().seed(streamSeed(index, purpose));
 }
 
 
@@ -145,33 +161,24 @@ void Foam::coagulationCloud::sortByCell()
 }
 
 
-Foam::autoPtr<Foam::coagulationParticle>
-Foam::coagulationCloud::newParticleInCell
+void Foam::coagulationCloud::placeInCell
 (
     const label celli,
-    const scalar mass,
-    const scalar weight
-)
+    coag::Rng& rng,
+    bornParticle& born
+) const
 {
     // Pick a tet of the cell's decomposition with probability proportional
     // to its volume, then a point uniformly in it (Dirichlet(1,1,1,1)
     // barycentric coordinates from three sorted uniforms)
-    const List<tetIndices> tets =
-        polyMeshTetDecomposition::cellTetIndices(mesh_, celli);
+    const List<tetIndices>& tets = cellTets_[celli];
+    const scalarList& tetVolumes = cellTetVolumes_[celli];
 
-    tetVolumes_.setSize(tets.size());
-    scalar total = 0;
-    forAll(tets, i)
-    {
-        tetVolumes_[i] = tets[i].tet(mesh_).mag();
-        total += tetVolumes_[i];
-    }
-
-    scalar target = rng_.uniform()*total;
+    scalar target = rng.uniform()*cellTetTotal_[celli];
     label chosen = tets.size() - 1;
     forAll(tets, i)
     {
-        target -= tetVolumes_[i];
+        target -= tetVolumes[i];
         if (target <= 0)
         {
             chosen = i;
@@ -179,20 +186,11 @@ Foam::coagulationCloud::newParticleInCell
         }
     }
 
-    scalar u[3] = {rng_.uniform(), rng_.uniform(), rng_.uniform()};
+    scalar u[3] = {rng.uniform(), rng.uniform(), rng.uniform()};
     std::sort(u, u + 3);
-    const barycentric coordinates(u[0], u[1] - u[0], u[2] - u[1], 1 - u[2]);
-
-    return autoPtr<coagulationParticle>::New
-    (
-        mesh_,
-        coordinates,
-        celli,
-        tets[chosen].face(),
-        tets[chosen].tetPt(),
-        mass,
-        weight
-    );
+    born.coordinates = barycentric(u[0], u[1] - u[0], u[2] - u[1], 1 - u[2]);
+    born.tetFace = tets[chosen].face();
+    born.tetPt = tets[chosen].tetPt();
 }
 
 
@@ -350,12 +348,15 @@ Foam::coagulationCloud::coagulationCloud
     moments_(4),
     removedInCells_(0),
     events_(),
+    nThreads_(1),
+    cellTets_(mesh.nCells()),
+    cellTetVolumes_(mesh.nCells()),
+    cellTetTotal_(mesh.nCells(), Zero),
     cellStart_(),
     cellNext_(),
     cellParticles_(),
-    tetVolumes_(),
-    population_(),
-    survived_(),
+    workers_(),
+    outcomes_(),
     rng_(0)
 {
     // Statistical scaling of the paper: W = Vref/(n V1).  V1 may be given
@@ -425,6 +426,39 @@ Foam::coagulationCloud::coagulationCloud
     algorithmNoInception_ =
         cellAlgorithm::New(properties_, *kernel_, noInception, control);
 
+    // Threads of the cell step: OMP_NUM_THREADS, or all cores in a serial
+    // run; MPI ranks already share the cores, so one thread per rank there
+    // unless OMP_NUM_THREADS says otherwise
+    #ifdef _OPENMP
+    nThreads_ = omp_get_max_threads();
+    if (Pstream::parRun() && !std::getenv("OMP_NUM_THREADS"))
+    {
+        nThreads_ = 1;
+    }
+    #endif
+    workers_.resize(nThreads_);
+    for (cellWorker& worker : workers_)
+    {
+        worker.algorithm = algorithm_->clone();
+        worker.algorithmNoInception = algorithmNoInception_->clone();
+    }
+
+    // Tet decomposition of every cell, computed once and serially (the
+    // mesh's demand-driven geometry is not built inside the threads)
+    forAll(cellTets_, celli)
+    {
+        cellTets_[celli] =
+            polyMeshTetDecomposition::cellTetIndices(mesh_, celli);
+        const List<tetIndices>& tets = cellTets_[celli];
+        scalarList& volumes = cellTetVolumes_[celli];
+        volumes.setSize(tets.size());
+        forAll(tets, i)
+        {
+            volumes[i] = tets[i].tet(mesh_).mag();
+            cellTetTotal_[celli] += volumes[i];
+        }
+    }
+
     // Particles of the start time, if any
     coagulationParticle::readFields(*this);
 
@@ -457,87 +491,168 @@ Foam::coagulationCloud::coagulationCloud
         << initial_.particles << " particles, weight per new particle "
         << particleWeight_ << ", inception rate " << inception_.rate
         << " in " << returnReduce(std::count(inceptionCell_.begin(), inceptionCell_.end(), true), sumOp<label>())
-        << " cells" << nl << endl;
+        << " cells, " << nThreads_ << " thread(s) for the cell step"
+        << nl << endl;
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::coagulationCloud::coagulateCell
+(
+    const label celli,
+    const scalar dt,
+    cellWorker& worker,
+    cellOutcome& outcome
+) const
+{
+    outcome.events = coag::StepStatistics();
+    outcome.born.clear();
+    outcome.died.clear();
+
+    const label start = cellStart_[celli];
+    const label np = cellStart_[celli + 1] - start;
+    const bool incepts = inception_.rate > 0 && inceptionCell_[celli];
+
+    // Without inception a cell needs a pair to change
+    if (np < 2 && !incepts)
+    {
+        return;
+    }
+
+    coag::CellPopulation& population = worker.population;
+    population.volume = mesh_.V()[celli];
+    population.particles.clear();
+    for (label i = 0; i < np; ++i)
+    {
+        const coagulationParticle& p = *cellParticles_[start + i];
+        coag::Particle cp;
+        cp.type.mass = p.mass();
+        cp.weight = p.weight();
+        cp.tag = i;
+        population.particles.push_back(cp);
+    }
+
+    // Counted in the worker, not in outcome: the outcomes of the cells that
+    // the other threads are stepping share its cache lines
+    worker.events = coag::StepStatistics();
+    worker.rng.engine().seed(streamSeed(celli, 0));
+    (incepts ? worker.algorithm : worker.algorithmNoInception)->advance
+    (
+        population, dt, worker.rng, worker.events
+    );
+    outcome.events = worker.events;
+
+    // Write the cell's new state back: survivors in place, new particles
+    // placed with the cell's stream (in population order, as they will be
+    // constructed), the rest recorded as gone
+    worker.survived.assign(np, 0);
+    for (const coag::Particle& cp : population.particles)
+    {
+        if (cp.tag >= 0)
+        {
+            coagulationParticle& p = *cellParticles_[start + cp.tag];
+            p.mass() = cp.type.mass;
+            p.weight() = cp.weight;
+            worker.survived[cp.tag] = 1;
+        }
+        else
+        {
+            bornParticle born;
+            born.mass = cp.type.mass;
+            born.weight = cp.weight;
+            placeInCell(celli, worker.rng, born);
+            outcome.born.push_back(born);
+        }
+    }
+    for (label i = 0; i < np; ++i)
+    {
+        if (!worker.survived[i])
+        {
+            outcome.died.push_back(start + i);
+        }
+    }
+}
+
+
 void Foam::coagulationCloud::coagulate(const scalar dt)
 {
     sortByCell();
 
-    const scalarField& V = mesh_.V();
     const label nCells = mesh_.nCells();
-    const bool hasInception = inception_.rate > 0;
+    outcomes_.resize(nCells);
 
-
+    // The cells are independent jump processes: share them among the
+    // threads (largest cells, downstream on a duct, are not known in
+    // advance, so cells are handed out one at a time)
+    std::string failure;
+    #pragma omp parallel for schedule(dynamic, 1) num_threads(nThreads_)
     for (label celli = 0; celli < nCells; ++celli)
     {
-        const label start = cellStart_[celli];
-        const label np = cellStart_[celli + 1] - start;
-        const bool incepts = hasInception && inceptionCell_[celli];
-
-        // Without inception a cell needs a pair to change
-        if (np < 2 && !incepts)
+        #ifdef _OPENMP
+        cellWorker& worker = workers_[omp_get_thread_num()];
+        #else
+        cellWorker& worker = workers_[0];
+        #endif
+        try
         {
-            continue;
+            coagulateCell(celli, dt, worker, outcomes_[celli]);
         }
-
-        population_.volume = V[celli];
-        population_.particles.clear();
-        for (label i = 0; i < np; ++i)
+        catch (const std::exception& e)
         {
-            const coagulationParticle& p = *cellParticles_[start + i];
-            coag::Particle cp;
-            cp.type.mass = p.mass();
-            cp.weight = p.weight();
-            cp.tag = i;
-            population_.particles.push_back(cp);
-        }
-
-        reseed(celli, 0);
-        const uint64_t inceptionsBefore = events_.inceptions;
-        (incepts ? algorithm_ : algorithmNoInception_)->advance
-        (
-            population_, dt, rng_, events_
-        );
-
-        // Particles removed in the cell: DSA merges (including any incepted
-        // and merged away within this step) and number-control halvings
-        removedInCells_ +=
-            np + label(events_.inceptions - inceptionsBefore)
-          - label(population_.particles.size());
-
-        // Write the cell's new state back into the cloud
-        survived_.assign(np, 0);
-        for (const coag::Particle& cp : population_.particles)
-        {
-            if (cp.tag >= 0)
+            #pragma omp critical(coagulationCloudFailure)
+            if (failure.empty())
             {
-                coagulationParticle& p = *cellParticles_[start + cp.tag];
-                p.mass() = cp.type.mass;
-                p.weight() = cp.weight;
-                survived_[cp.tag] = 1;
-            }
-            else
-            {
-                // New particles are not in cellParticles_: safe to add now
-                this->addParticle
-                (
-                    newParticleInCell(celli, cp.type.mass, cp.weight).ptr()
-                );
-            }
-        }
-        for (label i = 0; i < np; ++i)
-        {
-            if (!survived_[i])
-            {
-                this->deleteParticle(*cellParticles_[start + i]);
+                failure =
+                    "cell " + std::to_string(celli) + ": " + e.what();
             }
         }
     }
+    if (!failure.empty())
+    {
+        FatalErrorInFunction
+            << "Cell step failed in " << failure << nl << exit(FatalError);
+    }
 
+    // Serially, in cell order: book the events, construct the new particles
+    // (ids are handed out in order) and delete the ones that are gone
+    for (label celli = 0; celli < nCells; ++celli)
+    {
+        const cellOutcome& outcome = outcomes_[celli];
+        events_.coagulations += outcome.events.coagulations;
+        events_.fictitious += outcome.events.fictitious;
+        events_.inceptions += outcome.events.inceptions;
+        events_.halvings += outcome.events.halvings;
+        events_.doublings += outcome.events.doublings;
+        events_.inceptedMass += outcome.events.inceptedMass;
+
+        // Particles removed in the cell: DSA merges (including any
+        // incepted and merged away within this step) and halvings
+        removedInCells_ +=
+            label(outcome.events.inceptions) - label(outcome.born.size())
+          + label(outcome.died.size());
+
+        for (const bornParticle& born : outcome.born)
+        {
+            this->addParticle
+            (
+                new coagulationParticle
+                (
+                    mesh_,
+                    born.coordinates,
+                    celli,
+                    born.tetFace,
+                    born.tetPt,
+                    born.mass,
+                    born.weight
+                )
+            );
+        }
+        for (const label i : outcome.died)
+        {
+            this->deleteParticle(*cellParticles_[i]);
+        }
+    }
 }
 
 

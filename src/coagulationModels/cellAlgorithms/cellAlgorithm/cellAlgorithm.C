@@ -25,6 +25,9 @@ Foam::cellAlgorithm::cellAlgorithm
     const coag::NumberControl& control
 )
 :
+    kernel_(kernel),
+    inception_(inception),
+    control_(control),
     core_(coag::makeCellAlgorithm(coreName, kernel.core(), inception, control))
 {}
 
@@ -57,6 +60,21 @@ Foam::autoPtr<Foam::cellAlgorithm> Foam::cellAlgorithm::New
     }
 
     return autoPtr<cellAlgorithm>(cstrIter()(kernel, inception, control));
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::autoPtr<Foam::cellAlgorithm> Foam::cellAlgorithm::clone() const
+{
+    // The type is in the table: this object was constructed from it
+    return autoPtr<cellAlgorithm>
+    (
+        kernelConstructorTablePtr_->cfind(this->type())()
+        (
+            kernel_, inception_, control_
+        )
+    );
 }
 
 
