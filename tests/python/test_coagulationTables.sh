@@ -349,6 +349,30 @@ run_expect "8. realisations sharing a seed" 2 "$TMP/dupseed.log" -- \
     tables --rows "$D/swa2048_dupseed" --out "$S/dupseed" --no-plots --check
 expect_grep "8. shared-seed message" "$TMP/dupseed.log" "share seeds"
 
+run_expect "8. one folder pooled with itself (DIR+DIR)" 2 "$TMP/selfpool.log" -- \
+    tables --rows "$D/swa2048+$D/swa2048" --out "$S/selfpool" --no-plots
+expect_grep "8. self-pooling shares seeds" "$TMP/selfpool.log" "share seeds"
+run_expect "8. SWA pooled with a DSA1 folder" 2 "$TMP/mixpool.log" -- \
+    tables --rows "$D/swa2048+$D/dsa1_2048" --out "$S/mixpool" --no-plots
+expect_grep "8. mixed pooling names the attribute" "$TMP/mixpool.log" "attribute algorithm"
+
+# ---------------------------------------------------------------- 8b. a row pooled from two folders
+# swa2048 (3 realisations, timing 12.5 s wall / 48.25 core-s) + swa2048_again (3, no timing):
+# one row of 6 realisations, 306 samples, mean exactly 9877 (both folders have that mean)
+run_expect "8b. DIR1+DIR2 pooled into one row" 0 "$TMP/pool.log" -- \
+    tables --rows "$D/swa2048+$D/swa2048_again" "$D/swa8192" --out "$S/pool" --no-plots
+if "$PY" - "$S/pool" <<'EOF'
+import csv, math, sys
+r = [x for x in csv.DictReader(open(sys.argv[1] + "/table1.csv")) if x["n"] == "2048"]
+good = (len(r) == 1 and r[0]["realisations"] == "6" and r[0]["samples"] == "306"
+        and math.isclose(float(r[0]["mean"]), 9877, rel_tol=1e-9))
+w = [x for x in csv.DictReader(open(sys.argv[1] + "/rows.csv")) if x["n"] == "2048"]
+good = good and len(w) == 1 and w[0]["wallSeconds"] == "" and "+" in w[0]["folder"]
+sys.exit(0 if good else 1)
+EOF
+then ok "8b. pooled row: R = 6, 306 samples, mean 9877, no partial timing"
+else ko "8b. pooled row table1.csv/rows.csv"; fi
+
 # ---------------------------------------------------------------- 9. constant kernel
 run_expect "9. constant-kernel row, no --check" 0 "$TMP/const.log" -- \
     tables --rows "$D/const256" --out "$TMP/const"

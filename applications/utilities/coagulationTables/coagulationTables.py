@@ -8,6 +8,8 @@ writes): its realisation_* sub-folders are independent runs of one method
 in postProcessing/coagulationSamples.  A row's samples are taken from each
 run's tRelax to the run's end (or --t-end), so DSA rows averaged over
 [0.2, 4.0] and SWA rows over [0.2, 0.4] just need runs of those lengths.
+"DIR1+DIR2" pools the realisations of several such folders (the same method
+and n, grown over several studies, all seeds distinct) into one row.
 
 For the table cell (the cell holding --table-x, by default 0.099, the cell
 [0.098, 0.1] of the additive duct) and each row it reports, as in the paper:
@@ -128,8 +130,11 @@ def realisation_dirs(row_dir):
 
 
 def load_row(row_dir, t_end):
-    """Per-realisation statistics of one ensemble, pooled."""
-    dirs = realisation_dirs(row_dir)
+    """Per-realisation statistics of one ensemble, pooled. "DIR1+DIR2+..." pools the
+    realisations of several ensembles of the same method and n (a row grown over several
+    studies); their seeds must all differ, and their wall and core seconds add up."""
+    parts = row_dir.split("+")
+    dirs = [d for part in parts for d in realisation_dirs(part)]
     per = []
     for d in dirs:
         ns = argparse.Namespace(realisations=None, case=d, t_relax=None, t_end=t_end, u=None,
@@ -178,10 +183,22 @@ def load_row(row_dir, t_end):
     windows = [(r["tRelax"], r["timeRange"][1] if t_end is None else min(t_end, r["timeRange"][1]))
                for p in per for r in p["meta"]["runs"]]
     timing = {}
-    tj = os.path.join(row_dir, "ensemble.json")
-    if os.path.isfile(tj):
-        with open(tj) as f:
-            timing = json.load(f)
+    for part in parts:
+        tj = os.path.join(part, "ensemble.json")
+        if os.path.isfile(tj):
+            with open(tj) as f:
+                t = json.load(f)
+            if not timing:
+                timing = t
+            else:
+                for key in ("wallSeconds", "cpuSeconds"):
+                    if key in timing and key in t:
+                        timing[key] = timing[key] + t[key]
+                    else:
+                        timing.pop(key, None)
+        elif len(parts) > 1:
+            timing = {}
+            break
     with np.errstate(invalid="ignore", divide="ignore"):
         nsd = np.sqrt(meta["n"] * var) / np.where(np.isfinite(res0["analytic"]), res0["analytic"], mean)
     return {
@@ -523,7 +540,8 @@ def parse_args(argv):
                                 formatter_class=argparse.RawDescriptionHelpFormatter,
                                 epilog="See the module documentation (head of this file).")
     p.add_argument("--rows", nargs="+", required=True, metavar="DIR",
-                   help="ensemble folders (coagulationEnsemble -out), one per method and n")
+                   help="ensemble folders (coagulationEnsemble -out), one per method and n; "
+                        "DIR1+DIR2 pools the realisations of several folders into one row")
     p.add_argument("--out", default="results", help="output folder (default: results)")
     p.add_argument("--table-x", type=float, default=0.099,
                    help="x inside the table cell (default 0.099: the cell [0.098, 0.1])")
