@@ -18,4 +18,8 @@ cmp -s "$out/realisation_0/0.6/M1" "$out/realisation_1/0.6/M1" && fail "the two 
 grep -q "samples: 2 realisation(s), 50 cells, 82..82 samples per cell" "$workDir/log.ensemble" \
     || { grep samples: "$workDir/log.ensemble"; fail "pooled sample count"; }
 [ -f "$out/results/moments.csv" ] || fail "no pooled moments.csv"
+# two realisations on -jobs 2: one thread each, said in the log, the solver logs and the json
+grep -q "2 at a time on 1 rank(s) x 1 thread(s) each" "$workDir/log.ensemble" || fail "ensemble thread count"
+grep -q "1 thread(s) for the cell step" "$out/realisation_0/log.coagulationFoam" || fail "solver thread count"
+grep -q '"threadsPerRank": 1,' "$out/ensemble.json" || fail "threadsPerRank in ensemble.json"
 echo "PASS ensemble: 2 realisations pooled"
