@@ -139,25 +139,43 @@ void Foam::coagulationCloud::reseed(const label index, const label purpose)
 
 void Foam::coagulationCloud::sortByCell()
 {
-    const label nCells = mesh_.nCells();
+    if (sorted_)
+    {
+        return;
+    }
 
+    const label nCells = mesh_.nCells();
+    const label nParticles = this->size();
+
+    // One pass over the cloud's linked list, whose nodes lie scattered in
+    // memory (at millions of particles each visit is a cache miss), then a
+    // stable counting sort on the arrays: within a cell, list order
+    listParticles_.setSize(nParticles);
+    listCells_.setSize(nParticles);
     cellStart_.setSize(nCells + 1);
     cellStart_ = 0;
-    for (const coagulationParticle& p : *this)
+    label i = 0;
+    for (coagulationParticle& p : *this)
     {
-        ++cellStart_[p.cell() + 1];
+        const label celli = p.cell();
+        listParticles_[i] = &p;
+        listCells_[i] = celli;
+        ++cellStart_[celli + 1];
+        ++i;
     }
     for (label celli = 0; celli < nCells; ++celli)
     {
         cellStart_[celli + 1] += cellStart_[celli];
     }
 
-    cellParticles_.setSize(this->size());
+    cellParticles_.setSize(nParticles);
     cellNext_ = SubList<label>(cellStart_, nCells);
-    for (coagulationParticle& p : *this)
+    for (label i = 0; i < nParticles; ++i)
     {
-        cellParticles_[cellNext_[p.cell()]++] = &p;
+        cellParticles_[cellNext_[listCells_[i]]++] = listParticles_[i];
     }
+
+    sorted_ = true;
 }
 
 
@@ -355,6 +373,9 @@ Foam::coagulationCloud::coagulationCloud
     cellStart_(),
     cellNext_(),
     cellParticles_(),
+    listParticles_(),
+    listCells_(),
+    sorted_(false),
     workers_(),
     outcomes_(),
     rng_(0)
@@ -653,6 +674,7 @@ void Foam::coagulationCloud::coagulate(const scalar dt)
             this->deleteParticle(*cellParticles_[i]);
         }
     }
+    sorted_ = false;
 }
 
 
@@ -667,6 +689,7 @@ void Foam::coagulationCloud::advect(const volVectorField& U, const scalar dt)
     (
         *this, U, outParticles, outNumber, outMass
     );
+    sorted_ = false;
     Cloud<coagulationParticle>::move(*this, td, dt);
 
     for (label patchi = 0; patchi < nPatches; ++patchi)
@@ -682,30 +705,40 @@ void Foam::coagulationCloud::advect(const volVectorField& U, const scalar dt)
 
 void Foam::coagulationCloud::updateMoments()
 {
-    for (volScalarField& Mk : moments_)
-    {
-        Mk.primitiveFieldRef() = 0;
-    }
+    // The sort is kept for the next coagulate(): nothing changes the cloud
+    // in between
+    sortByCell();
 
     scalarField& M0 = moments_[0].primitiveFieldRef();
     scalarField& M1 = moments_[1].primitiveFieldRef();
     scalarField& M2 = moments_[2].primitiveFieldRef();
     scalarField& M3 = moments_[3].primitiveFieldRef();
+    const scalarField& V = mesh_.V();
+    const label nCells = mesh_.nCells();
 
-    for (const coagulationParticle& p : *this)
+    // Each cell sums its particles in list order, whatever the thread count
+    #pragma omp parallel for schedule(static) num_threads(nThreads_)
+    for (label celli = 0; celli < nCells; ++celli)
     {
-        const label celli = p.cell();
-        const scalar w = p.weight();
-        const scalar m = p.mass();
-        M0[celli] += w;
-        M1[celli] += w*m;
-        M2[celli] += w*m*m;
-        M3[celli] += w*m*m*m;
+        scalar s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+        for (label i = cellStart_[celli]; i < cellStart_[celli + 1]; ++i)
+        {
+            const coagulationParticle& p = *cellParticles_[i];
+            const scalar w = p.weight();
+            const scalar m = p.mass();
+            s0 += w;
+            s1 += w*m;
+            s2 += w*m*m;
+            s3 += w*m*m*m;
+        }
+        M0[celli] = s0/V[celli];
+        M1[celli] = s1/V[celli];
+        M2[celli] = s2/V[celli];
+        M3[celli] = s3/V[celli];
     }
 
     for (volScalarField& Mk : moments_)
     {
-        Mk.primitiveFieldRef() /= mesh_.V();
         Mk.correctBoundaryConditions();
     }
 }
