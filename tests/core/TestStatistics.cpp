@@ -65,8 +65,8 @@ TEST(Moments, WeightedMassMomentsPerVolume)
 {
     CellPopulation pop;
     pop.volume = 2.0;
-    pop.particles.push_back(Particle{ParticleType{1.0}, 3.0, {}, 0});
-    pop.particles.push_back(Particle{ParticleType{2.0}, 0.5, {}, 1});
+    pop.particles.push_back(Particle{ParticleType{1.0}, 3.0, 0});
+    pop.particles.push_back(Particle{ParticleType{2.0}, 0.5, 1});
     const auto m = moments(pop);
     EXPECT_DOUBLE_EQ(m[0], (3.0 + 0.5) / 2);
     EXPECT_DOUBLE_EQ(m[1], (3.0 + 1.0) / 2);

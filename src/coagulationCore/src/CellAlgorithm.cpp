@@ -294,7 +294,7 @@ void ParticleCellAlgorithm::advance(CellPopulation& pop, double dt, Rng& rng,
         double u = rng.uniform() * totalRate;
         if (u < inceptionRate) {
             // ---- inception
-            P.push_back(Particle{inception_.type, inception_.weight, {0.0, 0.0, 0.0}, -1});
+            P.push_back(Particle{inception_.type, inception_.weight, -1});
             const std::size_t j = P.size() - 1;
             if (j >= tree_.capacity()) tree_.resizeCapacity(2 * tree_.capacity());
             fillLeaf(P[j], j);

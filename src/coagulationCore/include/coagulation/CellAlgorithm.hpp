@@ -32,7 +32,7 @@ struct StepStatistics {
 //       (z1+z2, w1 m1/(m1+m2)) and j2 is unchanged (mass sum w*m conserved exactly).
 //  DSA1/DSA2 (eqs 9-15): all weights equal to w (the inception weight when inception is
 //       on); inception at rate rate*V/w; each unordered pair coagulates at rate K w / V into
-//       one particle of type z1+z2 that sits at x1 (keeping particle 1's position and tag)
+//       one particle of type z1+z2 that sits at x1 (keeping particle 1's tag, hence its position)
 //       with probability p and at x2 otherwise; the other particle is removed.
 //       DSA1: p = 1/2, DSA2: p = m1/(m1+m2).
 //  All three reproduce dn/dt = I + 1/2 sum sum K n n - n sum K n for n = sum(w)/V.
@@ -59,7 +59,7 @@ public:
     virtual std::string name() const = 0;  //!< "SWA", "DSA1", "DSA2"
 
     //- Advance one homogeneous cell over dt as an exact jump process (inception +
-    //  coagulation). Particles may be modified, added (tag -1, position {0,0,0}: the caller
+    //  coagulation). Particles may be modified, added (tag -1: the caller
     //  places them) and (DSA) removed; the order of pop.particles is not preserved; DSA number
     //  control may change pop.volume. Accumulates into stats.
     //  Throws std::invalid_argument for dt < 0, volume <= 0, and (DSA) unequal weights.

@@ -22,7 +22,7 @@ namespace coag {
 //
 //  minParticles (0 = off): in a closed DSA cell (inception rate 0) with 0 < N < minParticles
 //  (checked at the start of advance and after every coagulation) every particle is
-//  duplicated (the copies get tag -1 and the original's position) and the sample volume is
+//  duplicated (the copies get tag -1; the caller places them) and the sample volume is
 //  doubled. This is exact for the empirical measure (no bias, no added variance at that
 //  moment), but the copies are correlated, so the variance keeps that of the population
 //  before doubling; it only stops the DSA cell from dying out. Ignored for SWA, whose

@@ -3,16 +3,16 @@
 
 #include "coagulation/ParticleType.hpp"
 
-#include <array>
 #include <cstdint>
 
 namespace coag {
 
-//- One computational particle.
+//- One computational particle of a cell population: 24 bytes, so that the large cells of
+//  high-n runs stay dense in the caches. Anything else the caller keeps (a position, the
+//  OpenFOAM particle) it finds through the tag.
 struct Particle {
     ParticleType type;
     double weight = 1.0;                 //!< statistical weight: number of physical particles represented
-    std::array<double, 3> position{};    //!< carried along, untouched by the cell algorithms
     std::int64_t tag = -1;               //!< caller's handle; -1 for particles the algorithm created
 };
 
