@@ -101,13 +101,29 @@ Summary run(const std::string& algName, const std::string& kernelName, std::size
     return s;
 }
 
+//- argv[i] as a positive number, or the default when absent; anything else ends the run
+double positiveArgument(int argc, char** argv, int i, double fallback)
+{
+    if (argc <= i) return fallback;
+    char* end = nullptr;
+    const double v = std::strtod(argv[i], &end);
+    if (end == argv[i] || *end != '\0' || !(v > 0.0)) {
+        std::fprintf(stderr,
+                     "Usage: coagulationBenchmark [minEventsPerCase (default 3e6)] [maxN (default "
+                     "1e6)] [repeats (default 3)]\n(argument %d, '%s', is not a positive number)\n",
+                     i, argv[i]);
+        std::exit(2);
+    }
+    return v;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
-    const double minEvents = argc > 1 ? std::atof(argv[1]) : 3e6;
-    const double maxN = argc > 2 ? std::atof(argv[2]) : 1e6;
-    const int repeats = argc > 3 ? std::max(1, std::atoi(argv[3])) : 3;
+    const double minEvents = positiveArgument(argc, argv, 1, 3e6);
+    const double maxN = positiveArgument(argc, argv, 2, 1e6);
+    const int repeats = static_cast<int>(positiveArgument(argc, argv, 3, 3));
     std::printf("# coagulationBenchmark: one cell, K0 = 1, density 1, single thread\n");
     std::printf("# events = accepted + fictitious coagulation jumps; timing includes the tree build\n");
     std::printf("# best (and median) of %d blocks; bytes/ptcl = (particle vector + sum tree) / N\n",
