@@ -170,9 +170,9 @@ void Foam::coagulationCloud::sortByCell()
 
     cellParticles_.setSize(nParticles);
     cellNext_ = SubList<label>(cellStart_, nCells);
-    for (label i = 0; i < nParticles; ++i)
+    for (label k = 0; k < nParticles; ++k)
     {
-        cellParticles_[cellNext_[listCells_[i]]++] = listParticles_[i];
+        cellParticles_[cellNext_[listCells_[k]]++] = listParticles_[k];
     }
 
     sorted_ = true;
@@ -640,12 +640,7 @@ void Foam::coagulationCloud::coagulate(const scalar dt)
     for (label celli = 0; celli < nCells; ++celli)
     {
         const cellOutcome& outcome = outcomes_[celli];
-        events_.coagulations += outcome.events.coagulations;
-        events_.fictitious += outcome.events.fictitious;
-        events_.inceptions += outcome.events.inceptions;
-        events_.halvings += outcome.events.halvings;
-        events_.doublings += outcome.events.doublings;
-        events_.inceptedMass += outcome.events.inceptedMass;
+        events_ += outcome.events;
 
         // Particles removed in the cell: DSA merges (including any
         // incepted and merged away within this step) and halvings

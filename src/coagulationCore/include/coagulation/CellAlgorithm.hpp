@@ -22,6 +22,18 @@ struct StepStatistics {
     std::uint64_t halvings = 0;      //!< number-control halvings
     std::uint64_t doublings = 0;     //!< number-control doublings
     double inceptedMass = 0;         //!< physical mass added by inception = sum(weight*mass)
+
+    //- Add another tally (e.g. one cell's, to a run's total)
+    StepStatistics& operator+=(const StepStatistics& o)
+    {
+        coagulations += o.coagulations;
+        fictitious += o.fictitious;
+        inceptions += o.inceptions;
+        halvings += o.halvings;
+        doublings += o.doublings;
+        inceptedMass += o.inceptedMass;
+        return *this;
+    }
 };
 
 //- Stochastic simulation of inception + coagulation in one homogeneous cell
