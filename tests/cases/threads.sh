@@ -1,34 +1,63 @@
 #!/bin/bash
-# The cell step shares the cells among OpenMP threads; every cell keeps its own random
-# stream and the new particles are constructed serially in cell order, so the results
-# must be identical, bit for bit, whatever the thread count (SWA, and DSA2, which also
-# removes particles).
+# The cell step shares the cells among OpenMP threads, and in a serial run the transport
+# step shares the particles. Every cell keeps its own random stream, new particles are
+# constructed serially in cell order, and the particles that leave are booked and deleted
+# serially in list order, so the results must be identical, bit for bit, whatever the
+# thread count: fields, particles, event counts and the balance (SWA; DSA2, which also
+# removes particles; inflow through the inlet with outflow through the outlet).
 . "$(dirname "$0")/caseLib.sh"
 
-for alg in SWA DSA2; do
+# runThreads name tutorial endTime writeInterval [entry value]...: the case on 1 and 2 threads
+runThreads()
+{
+    local name=$1 tutorial=$2 end=$3 write=$4 threads d
+    shift 4
     for threads in 1 2; do
-        d=$(newCase additiveKernelDuct "threads_${alg}_$threads")
+        d=$(newCase "$tutorial" "threads_${name}_$threads")
         cd "$d"
-        setEntry . constant/coagulationProperties algorithm "$alg"
-        setEntry . constant/coagulationProperties statisticalWeight/n 1024
-        setEntry . system/controlDict endTime 0.08
-        setEntry . system/controlDict writeInterval 0.04
+        local args=("$@")
+        for ((i = 0; i < ${#args[@]}; i += 2)); do
+            setEntry . constant/coagulationProperties "${args[i]}" "${args[i + 1]}"
+        done
+        setEntry . system/controlDict endTime "$end"
+        setEntry . system/controlDict writeInterval "$write"
         OMP_NUM_THREADS=$threads runApplication coagulationFoam
         grep -q "$threads thread(s) for the cell step" log.coagulationFoam \
-            || fail "$alg: the log does not report $threads thread(s)"
+            || fail "$name: the log does not report $threads thread(s)"
         checkBalance log.coagulationFoam
     done
-    one="$workDir/threads_${alg}_1" two="$workDir/threads_${alg}_2"
-    for t in 0.04 0.08; do
+}
+
+# sameOnThreads name times...: 1 and 2 threads wrote the same fields, particles, counts
+sameOnThreads()
+{
+    local name=$1 one="$workDir/threads_$1_1" two="$workDir/threads_$1_2" t f line a b
+    shift
+    for t in "$@"; do
         for f in M0 M1 M2 M3 lagrangian/coagulationCloud/mass lagrangian/coagulationCloud/weight \
                  lagrangian/coagulationCloud/coordinates
         do
-            [ -s "$one/$t/$f" ] || fail "$alg: $t/$f not written"
-            cmp -s "$one/$t/$f" "$two/$t/$f" || fail "$alg: $t/$f differs between 1 and 2 threads"
+            [ -s "$one/$t/$f" ] || fail "$name: $t/$f not written"
+            cmp -s "$one/$t/$f" "$two/$t/$f" || fail "$name: $t/$f differs between 1 and 2 threads"
         done
     done
-    c1=$(grep "coagulation events  " "$one/log.coagulationFoam" | tail -1)
-    c2=$(grep "coagulation events  " "$two/log.coagulationFoam" | tail -1)
-    [ "$c1" = "$c2" ] || fail "$alg: event counts differ: '$c1' vs '$c2'"
-    echo "PASS threads $alg: fields, particles and event counts identical on 1 and 2 threads ($c1)"
+    for line in "coagulation events  " "particles in/incepted/out" "mass initial + inflow"; do
+        a=$(grep "$line" "$one/log.coagulationFoam" | tail -1)
+        b=$(grep "$line" "$two/log.coagulationFoam" | tail -1)
+        [ -n "$a" ] || fail "$name: no '$line' in the log"
+        [ "$a" = "$b" ] || fail "$name: '$line' differs: '$a' vs '$b'"
+    done
+    echo "PASS threads $name: fields, particles, event counts and balance identical on 1 and 2 threads"
+    grep "particles in/incepted/out" "$one/log.coagulationFoam" | tail -1
+}
+
+for alg in SWA DSA2; do
+    runThreads "$alg" additiveKernelDuct 0.08 0.04 algorithm "$alg" statisticalWeight/n 1024
+    sameOnThreads "$alg" 0.04 0.08
 done
+
+# Inflow only: particles enter through the inlet and leave through the outlet
+runThreads inflow constantKernelDuct 0.3 0.3 inception/rate 0 inflow/density 1e7 statisticalWeight/n 512
+sameOnThreads inflow 0.3
+out=$(grep "particles in/incepted/out" "$workDir/threads_inflow_2/log.coagulationFoam" | tail -1 | awk '{print $NF}')
+[ "${out:-0}" -gt 0 ] || fail "inflow: no particle left through the outlet"

@@ -212,6 +212,78 @@ void Foam::coagulationCloud::placeInCell
 }
 
 
+void Foam::coagulationCloud::moveOnThreads
+(
+    const volVectorField& U,
+    coagulationParticle::trackingData& td,
+    const scalar dt
+)
+{
+    // What a move did with a particle. Tracking itself drops a particle
+    // (unbooked, as in Cloud::move) only on patch types the particle does not
+    // handle; the particle balance then shows it
+    enum : char { keptByMove, leftByOutflow, droppedByTracking };
+
+    // The threads only read the mesh: its demand-driven parts that tracking
+    // uses are built here, serially, first
+    (void)mesh_.tetBasePtIs();
+    (void)mesh_.cells();
+    (void)mesh_.cellCentres();
+    (void)mesh_.geometricD();
+
+    const label nParticles = this->size();
+    listParticles_.setSize(nParticles);
+    moveKept_.resize(nParticles);
+    label i = 0;
+    for (coagulationParticle& p : *this)
+    {
+        listParticles_[i++] = &p;
+    }
+
+    const label nPatches = mesh_.boundaryMesh().size();
+
+    #pragma omp parallel num_threads(nThreads_)
+    {
+        // A particle's move changes only that particle; what it books as
+        // outflow here is discarded and booked below in list order, so that
+        // the sums do not depend on the thread count
+        List<label> outParticles(nPatches, Zero);
+        List<scalar> outNumber(nPatches, Zero);
+        List<scalar> outMass(nPatches, Zero);
+        coagulationParticle::trackingData threadTd
+        (
+            *this, U, outParticles, outNumber, outMass
+        );
+
+        #pragma omp for schedule(dynamic, 4096)
+        for (label k = 0; k < nParticles; ++k)
+        {
+            coagulationParticle& p = *listParticles_[k];
+            p.stepFraction() = 0;
+            const label booked = threadTd.nBooked();
+            const bool kept = p.move(*this, threadTd, dt);
+            moveKept_[k] =
+                kept ? keptByMove
+              : threadTd.nBooked() > booked ? leftByOutflow
+              : droppedByTracking;
+        }
+    }
+
+    for (label k = 0; k < nParticles; ++k)
+    {
+        if (moveKept_[k] != keptByMove)
+        {
+            coagulationParticle& p = *listParticles_[k];
+            if (moveKept_[k] == leftByOutflow)
+            {
+                td.bookOutflow(p.patch(), p);
+            }
+            deleteParticle(p);
+        }
+    }
+}
+
+
 void Foam::coagulationCloud::injectInflow
 (
     const volVectorField& U,
@@ -375,6 +447,7 @@ Foam::coagulationCloud::coagulationCloud
     cellParticles_(),
     listParticles_(),
     listCells_(),
+    moveKept_(),
     sorted_(false),
     workers_(),
     outcomes_(),
@@ -685,7 +758,15 @@ void Foam::coagulationCloud::advect(const volVectorField& U, const scalar dt)
         *this, U, outParticles, outNumber, outMass
     );
     sorted_ = false;
-    Cloud<coagulationParticle>::move(*this, td, dt);
+    if (nThreads_ > 1 && !Pstream::parRun())
+    {
+        moveOnThreads(U, td, dt);
+    }
+    else
+    {
+        // Decomposed runs hand particles to other processors: Cloud::move
+        Cloud<coagulationParticle>::move(*this, td, dt);
+    }
 
     for (label patchi = 0; patchi < nPatches; ++patchi)
     {
