@@ -145,23 +145,18 @@ void Foam::coagulationCloud::sortByCell()
     }
 
     const label nCells = mesh_.nCells();
-    const label nParticles = this->size();
 
-    // One pass over the cloud's linked list, whose nodes lie scattered in
-    // memory (at millions of particles each visit is a cache miss), then a
-    // stable counting sort on the arrays: within a cell, list order
-    listParticles_.setSize(nParticles);
-    listCells_.setSize(nParticles);
+    // The cloud in list order (kept by the steps, or one pass over the
+    // linked list), then a stable counting sort on the arrays: within a
+    // cell, list order
+    listCloud();
+    const label nParticles = listParticles_.size();
+
     cellStart_.setSize(nCells + 1);
     cellStart_ = 0;
-    label i = 0;
-    for (coagulationParticle& p : *this)
+    for (label k = 0; k < nParticles; ++k)
     {
-        const label celli = p.cell();
-        listParticles_[i] = &p;
-        listCells_[i] = celli;
-        ++cellStart_[celli + 1];
-        ++i;
+        ++cellStart_[listCells_[k] + 1];
     }
     for (label celli = 0; celli < nCells; ++celli)
     {
@@ -169,13 +164,55 @@ void Foam::coagulationCloud::sortByCell()
     }
 
     cellParticles_.setSize(nParticles);
+    cellListIndex_.setSize(nParticles);
     cellNext_ = SubList<label>(cellStart_, nCells);
     for (label k = 0; k < nParticles; ++k)
     {
-        cellParticles_[cellNext_[listCells_[k]]++] = listParticles_[k];
+        const label pos = cellNext_[listCells_[k]]++;
+        cellParticles_[pos] = listParticles_[k];
+        cellListIndex_[pos] = k;
     }
 
     sorted_ = true;
+}
+
+
+void Foam::coagulationCloud::listCloud()
+{
+    if (listValid_)
+    {
+        return;
+    }
+
+    const label nParticles = this->size();
+    listParticles_.setSize(nParticles);
+    listCells_.setSize(nParticles);
+    label i = 0;
+    for (coagulationParticle& p : *this)
+    {
+        listParticles_[i] = &p;
+        listCells_[i] = p.cell();
+        ++i;
+    }
+    listValid_ = true;
+}
+
+
+void Foam::coagulationCloud::compactList()
+{
+    const label n = listParticles_.size();
+    label kept = 0;
+    for (label k = 0; k < n; ++k)
+    {
+        if (!listRemoved_[k])
+        {
+            listParticles_[kept] = listParticles_[k];
+            listCells_[kept] = listCells_[k];
+            ++kept;
+        }
+    }
+    listParticles_.setSize(kept);
+    listCells_.setSize(kept);
 }
 
 
@@ -231,14 +268,9 @@ void Foam::coagulationCloud::moveOnThreads
     (void)mesh_.cellCentres();
     (void)mesh_.geometricD();
 
-    const label nParticles = this->size();
-    listParticles_.setSize(nParticles);
+    listCloud();
+    const label nParticles = listParticles_.size();
     moveKept_.resize(nParticles);
-    label i = 0;
-    for (coagulationParticle& p : *this)
-    {
-        listParticles_[i++] = &p;
-    }
 
     const label nPatches = mesh_.boundaryMesh().size();
 
@@ -266,9 +298,11 @@ void Foam::coagulationCloud::moveOnThreads
                 kept ? keptByMove
               : threadTd.nBooked() > booked ? leftByOutflow
               : droppedByTracking;
+            listCells_[k] = p.cell();
         }
     }
 
+    listRemoved_.assign(nParticles, 0);
     for (label k = 0; k < nParticles; ++k)
     {
         if (moveKept_[k] != keptByMove)
@@ -279,8 +313,10 @@ void Foam::coagulationCloud::moveOnThreads
                 td.bookOutflow(p.patch(), p);
             }
             deleteParticle(p);
+            listRemoved_[k] = 1;
         }
     }
+    compactList();
 }
 
 
@@ -357,13 +393,16 @@ void Foam::coagulationCloud::injectInflow
 
                 const point position = onFace + rng_.uniform()*dt*Uin;
 
-                this->addParticle
+                coagulationParticle* pPtr = new coagulationParticle
                 (
-                    new coagulationParticle
-                    (
-                        mesh_, position, owner, inflowMass_, particleWeight_
-                    )
+                    mesh_, position, owner, inflowMass_, particleWeight_
                 );
+                this->addParticle(pPtr);
+                if (listValid_)
+                {
+                    listParticles_.append(pPtr);
+                    listCells_.append(pPtr->cell());
+                }
 
                 inflow_.particles += 1;
                 inflow_.number += particleWeight_;
@@ -447,6 +486,9 @@ Foam::coagulationCloud::coagulationCloud
     cellParticles_(),
     listParticles_(),
     listCells_(),
+    listValid_(false),
+    cellListIndex_(),
+    listRemoved_(),
     moveKept_(),
     sorted_(false),
     workers_(),
@@ -709,7 +751,18 @@ void Foam::coagulationCloud::coagulate(const scalar dt)
     }
 
     // Serially, in cell order: book the events, construct the new particles
-    // (ids are handed out in order) and delete the ones that are gone
+    // (ids are handed out in order) and delete the ones that are gone. The
+    // list is then the old one less the dead, then the new in this order
+    listRemoved_.assign(listParticles_.size(), 0);
+    for (label celli = 0; celli < nCells; ++celli)
+    {
+        for (const label i : outcomes_[celli].died)
+        {
+            listRemoved_[cellListIndex_[i]] = 1;
+        }
+    }
+    compactList();
+
     for (label celli = 0; celli < nCells; ++celli)
     {
         const cellOutcome& outcome = outcomes_[celli];
@@ -723,19 +776,19 @@ void Foam::coagulationCloud::coagulate(const scalar dt)
 
         for (const bornParticle& born : outcome.born)
         {
-            this->addParticle
+            coagulationParticle* pPtr = new coagulationParticle
             (
-                new coagulationParticle
-                (
-                    mesh_,
-                    born.coordinates,
-                    celli,
-                    born.tetFace,
-                    born.tetPt,
-                    born.mass,
-                    born.weight
-                )
+                mesh_,
+                born.coordinates,
+                celli,
+                born.tetFace,
+                born.tetPt,
+                born.mass,
+                born.weight
             );
+            this->addParticle(pPtr);
+            listParticles_.append(pPtr);
+            listCells_.append(celli);
         }
         for (const label i : outcome.died)
         {
@@ -765,6 +818,7 @@ void Foam::coagulationCloud::advect(const volVectorField& U, const scalar dt)
     else
     {
         // Decomposed runs hand particles to other processors: Cloud::move
+        listValid_ = false;
         Cloud<coagulationParticle>::move(*this, td, dt);
     }
 
