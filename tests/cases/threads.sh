@@ -1,19 +1,23 @@
 #!/bin/bash
 # The cell step shares the cells among OpenMP threads, and in a serial run the transport
-# step shares the particles. Every cell keeps its own random stream, new particles are
-# constructed serially in cell order, and the particles that leave are booked and deleted
-# serially in list order, so the results must be identical, bit for bit, whatever the
-# thread count: fields, particles, event counts and the balance (SWA; DSA2, which also
-# removes particles; inflow through the inlet with outflow through the outlet).
+# step shares the particles, taken from list arrays the cloud keeps across the steps.
+# Every cell keeps its own random stream, new particles are constructed serially in cell
+# order, and the particles that leave are booked and deleted serially in list order, so
+# the results must be identical, bit for bit, on 1 and 2 threads and to the reference
+# (OptimisationSwitches coagulationCloudMove 1: OpenFOAM's Cloud::move over the linked
+# list): fields, particles, event counts and the balance (SWA; DSA2, which also removes
+# particles; inflow through the inlet with outflow through the outlet).
 . "$(dirname "$0")/caseLib.sh"
 
-# runThreads name tutorial endTime writeInterval [entry value]...: the case on 1 and 2 threads
+# runThreads name tutorial endTime writeInterval [entry value]...: the case on 1 and 2
+# threads, and the reference (1 thread, Cloud::move)
 runThreads()
 {
-    local name=$1 tutorial=$2 end=$3 write=$4 threads d
+    local name=$1 tutorial=$2 end=$3 write=$4 run threads d
     shift 4
-    for threads in 1 2; do
-        d=$(newCase "$tutorial" "threads_${name}_$threads")
+    for run in ref 1 2; do
+        threads=${run/ref/1}
+        d=$(newCase "$tutorial" "threads_${name}_$run")
         cd "$d"
         local args=("$@")
         for ((i = 0; i < ${#args[@]}; i += 2)); do
@@ -21,6 +25,10 @@ runThreads()
         done
         setEntry . system/controlDict endTime "$end"
         setEntry . system/controlDict writeInterval "$write"
+        if [ "$run" = ref ]; then
+            foamDictionary -entry OptimisationSwitches -add "{ coagulationCloudMove 1; }" \
+                system/controlDict > /dev/null
+        fi
         OMP_NUM_THREADS=$threads runApplication coagulationFoam
         grep -q "$threads thread(s) for the cell step" log.coagulationFoam \
             || fail "$name: the log does not report $threads thread(s)"
@@ -28,27 +36,34 @@ runThreads()
     done
 }
 
-# sameOnThreads name times...: 1 and 2 threads wrote the same fields, particles, counts
+# sameOnThreads name times...: 1 and 2 threads wrote the reference's fields, particles,
+# counts and balance
 sameOnThreads()
 {
-    local name=$1 one="$workDir/threads_$1_1" two="$workDir/threads_$1_2" t f line a b
+    local name=$1 ref="$workDir/threads_$1_ref" run other t f line a b
     shift
-    for t in "$@"; do
-        for f in M0 M1 M2 M3 lagrangian/coagulationCloud/mass lagrangian/coagulationCloud/weight \
-                 lagrangian/coagulationCloud/coordinates
-        do
-            [ -s "$one/$t/$f" ] || fail "$name: $t/$f not written"
-            cmp -s "$one/$t/$f" "$two/$t/$f" || fail "$name: $t/$f differs between 1 and 2 threads"
+    grep -q "Overriding OptimisationSwitches" "$ref/log.coagulationFoam" \
+        || fail "$name: the reference run did not take coagulationCloudMove"
+    for run in 1 2; do
+        other="$workDir/threads_${name}_$run"
+        for t in "$@"; do
+            for f in M0 M1 M2 M3 lagrangian/coagulationCloud/mass lagrangian/coagulationCloud/weight \
+                     lagrangian/coagulationCloud/coordinates
+            do
+                [ -s "$ref/$t/$f" ] || fail "$name: $t/$f not written"
+                cmp -s "$ref/$t/$f" "$other/$t/$f" \
+                    || fail "$name: $t/$f differs between the reference and $run thread(s)"
+            done
+        done
+        for line in "coagulation events  " "particles in/incepted/out" "mass initial + inflow"; do
+            a=$(grep "$line" "$ref/log.coagulationFoam" | tail -1)
+            b=$(grep "$line" "$other/log.coagulationFoam" | tail -1)
+            [ -n "$a" ] || fail "$name: no '$line' in the log"
+            [ "$a" = "$b" ] || fail "$name: '$line' differs on $run thread(s): '$a' vs '$b'"
         done
     done
-    for line in "coagulation events  " "particles in/incepted/out" "mass initial + inflow"; do
-        a=$(grep "$line" "$one/log.coagulationFoam" | tail -1)
-        b=$(grep "$line" "$two/log.coagulationFoam" | tail -1)
-        [ -n "$a" ] || fail "$name: no '$line' in the log"
-        [ "$a" = "$b" ] || fail "$name: '$line' differs: '$a' vs '$b'"
-    done
-    echo "PASS threads $name: fields, particles, event counts and balance identical on 1 and 2 threads"
-    grep "particles in/incepted/out" "$one/log.coagulationFoam" | tail -1
+    echo "PASS threads $name: fields, particles, event counts and balance on 1 and 2 threads identical to Cloud::move's"
+    grep "particles in/incepted/out" "$ref/log.coagulationFoam" | tail -1
 }
 
 for alg in SWA DSA2; do

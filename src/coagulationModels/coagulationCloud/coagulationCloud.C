@@ -8,6 +8,7 @@
 #include "polyMeshTetDecomposition.H"
 #include "zeroGradientFvPatchFields.H"
 #include "processorPolyPatch.H"
+#include "registerSwitch.H"
 
 #include <random>
 #include <cstdlib>
@@ -16,6 +17,19 @@
 #ifdef _OPENMP
 #include <omp.h>
 #endif
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+int Foam::coagulationCloud::cloudMove
+(
+    Foam::debug::optimisationSwitch("coagulationCloudMove", 0)
+);
+registerOptSwitch
+(
+    "coagulationCloudMove",
+    int,
+    Foam::coagulationCloud::cloudMove
+);
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -811,13 +825,14 @@ void Foam::coagulationCloud::advect(const volVectorField& U, const scalar dt)
         *this, U, outParticles, outNumber, outMass
     );
     sorted_ = false;
-    if (nThreads_ > 1 && !Pstream::parRun())
+    if (!cloudMove && !Pstream::parRun())
     {
         moveOnThreads(U, td, dt);
     }
     else
     {
         // Decomposed runs hand particles to other processors: Cloud::move
+        // (and the walk of the linked list it implies)
         listValid_ = false;
         Cloud<coagulationParticle>::move(*this, td, dt);
     }
