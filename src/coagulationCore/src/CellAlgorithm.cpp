@@ -77,10 +77,14 @@ private:
         return col.uniform ? col.constant * static_cast<double>(n) : tree_.total(col.tree);
     }
 
-    std::size_t sampleColumn(const Column& col, std::size_t n, Rng& rng) const
+    //- A particle index from a column; `particles` (the population's array) lets the tree
+    //  prefetch the candidates' records on large trees
+    std::size_t sampleColumn(const Column& col, std::size_t n, Rng& rng,
+                             const Particle* particles) const
     {
         if (col.uniform) return static_cast<std::size_t>(rng.uniformIndex(n));
-        return tree_.sample(col.tree, rng.uniform() * tree_.total(col.tree));
+        return tree_.sample(col.tree, rng.uniform() * tree_.total(col.tree), particles,
+                            sizeof(Particle));
     }
 
     void halve(CellPopulation& pop, Rng& rng, StepStatistics& stats);
@@ -319,12 +323,12 @@ void ParticleCellAlgorithm::advance(CellPopulation& pop, double dt, Rng& rng,
         }
         const Column& first = columns_[termFirst_[term]];
         const Column& second = columns_[termSecond_[term]];
-        const std::size_t j1 = sampleColumn(first, n, rng);
+        const std::size_t j1 = sampleColumn(first, n, rng, P.data());
 #if defined(__GNUC__)
         __builtin_prefetch(&P[j1 < n ? j1 : 0]);
 #endif
         if (nTreeColumns_ > 0) tree_.prefetchPath(j1);
-        const std::size_t j2 = sampleColumn(second, n, rng);
+        const std::size_t j2 = sampleColumn(second, n, rng, P.data());
         if (j1 == j2 || j1 >= n || j2 >= n) {
             ++stats.fictitious;
             continue;

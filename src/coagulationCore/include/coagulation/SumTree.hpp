@@ -70,10 +70,59 @@ public:
     //  prefetched while that is computed.
     //  A zero-valued slot is never chosen, and if round-off puts u at or above a node's sum
     //  the last positive slot is taken, so the result is always a leaf with a positive value.
-    std::size_t sample(std::size_t c, double u) const
+    //  sample(c, u, leafData, leafBytes): the same leaf; in a tree too big for the caches it
+    //  also prefetches the records of the 8 candidate leaves once their node is known
+    //  (`leafData`: one `leafBytes`-sized record per leaf), so that the caller's load of the
+    //  chosen leaf's record overlaps the last level.
+    std::size_t sample(std::size_t c, double u) const { return descend<false>(c, u, nullptr, 0); }
+    std::size_t sample(std::size_t c, double u, const void* leafData, std::size_t leafBytes) const
     {
+        return prefetch_ ? descend<true>(c, u, leafData, leafBytes)
+                         : descend<false>(c, u, nullptr, 0);
+    }
+
+    //- Hint the cache about the lowest `depth` nodes on the path of leaf j.
+    void prefetchPath(std::size_t j, std::size_t depth = 3) const
+    {
+#if defined(__GNUC__)
+        if (!prefetch_) return;
+        std::size_t idx = j;
+        const std::size_t n = levelOffset_.size() < depth ? levelOffset_.size() : depth;
+        for (std::size_t l = 0; l < n; ++l) {
+            idx >>= 3;
+            const double* p = base_ + levelOffset_[l] + idx * blockSize_;
+            for (std::size_t c = 0; c < ncol_; ++c) __builtin_prefetch(p + c * fanOut);
+        }
+#else
+        (void)j;
+        (void)depth;
+#endif
+    }
+
+    //- Change the capacity, keeping the leaf values that fit.
+    void resizeCapacity(std::size_t capacity);
+
+    //- Bytes held by the tree array.
+    std::size_t memoryBytes() const { return storage_.capacity() * sizeof(double); }
+
+private:
+    template<bool PrefetchLeaves>
+    std::size_t descend(std::size_t c, double u, const void* leafData, std::size_t leafBytes) const
+    {
+        (void)leafData;
+        (void)leafBytes;
         std::size_t node = 0;
         for (std::size_t l = levelOffset_.size(); l-- > 0;) {
+#if defined(__GNUC__)
+            if (PrefetchLeaves && l == 0) {
+                // Addresses as integers: the last node's candidates may lie past the array
+                const std::uintptr_t first =
+                    reinterpret_cast<std::uintptr_t>(leafData) + node * fanOut * leafBytes;
+                for (std::size_t b = 0; b < fanOut * leafBytes; b += 64) {
+                    __builtin_prefetch(reinterpret_cast<const void*>(first + b));
+                }
+            }
+#endif
             const double* v = base_ + levelOffset_[l] + node * blockSize_ + c * fanOut;
 #if defined(__GNUC__)
             if (prefetch_ && l > 0 && l <= 3) {
@@ -105,31 +154,6 @@ public:
         return node;
     }
 
-    //- Hint the cache about the lowest `depth` nodes on the path of leaf j.
-    void prefetchPath(std::size_t j, std::size_t depth = 3) const
-    {
-#if defined(__GNUC__)
-        if (!prefetch_) return;
-        std::size_t idx = j;
-        const std::size_t n = levelOffset_.size() < depth ? levelOffset_.size() : depth;
-        for (std::size_t l = 0; l < n; ++l) {
-            idx >>= 3;
-            const double* p = base_ + levelOffset_[l] + idx * blockSize_;
-            for (std::size_t c = 0; c < ncol_; ++c) __builtin_prefetch(p + c * fanOut);
-        }
-#else
-        (void)j;
-        (void)depth;
-#endif
-    }
-
-    //- Change the capacity, keeping the leaf values that fit.
-    void resizeCapacity(std::size_t capacity);
-
-    //- Bytes held by the tree array.
-    std::size_t memoryBytes() const { return storage_.capacity() * sizeof(double); }
-
-private:
     static double nodeSum(const double* v)
     {
         return ((v[0] + v[1]) + (v[2] + v[3])) + ((v[4] + v[5]) + (v[6] + v[7]));
