@@ -212,13 +212,13 @@ void Foam::coagulationCloud::listCloud()
 }
 
 
-void Foam::coagulationCloud::compactList()
+void Foam::coagulationCloud::compactList(const std::vector<char>& removed)
 {
     const label n = listParticles_.size();
     label kept = 0;
     for (label k = 0; k < n; ++k)
     {
-        if (!listRemoved_[k])
+        if (!removed[k])
         {
             listParticles_[kept] = listParticles_[k];
             listCells_[kept] = listCells_[k];
@@ -270,10 +270,11 @@ void Foam::coagulationCloud::moveOnThreads
     const scalar dt
 )
 {
-    // What a move did with a particle. Tracking itself drops a particle
+    // What a move did with a particle (zero: kept, so that the array marks
+    // the particles to compact away). Tracking itself drops a particle
     // (unbooked, as in Cloud::move) only on patch types the particle does not
     // handle; the particle balance then shows it
-    enum : char { keptByMove, leftByOutflow, droppedByTracking };
+    enum : char { keptByMove = 0, leftByOutflow, droppedByTracking };
 
     // The threads only read the mesh: its demand-driven parts that tracking
     // uses are built here, serially, first
@@ -284,7 +285,7 @@ void Foam::coagulationCloud::moveOnThreads
 
     listCloud();
     const label nParticles = listParticles_.size();
-    moveKept_.resize(nParticles);
+    moveOutcome_.resize(nParticles);
 
     const label nPatches = mesh_.boundaryMesh().size();
 
@@ -308,7 +309,7 @@ void Foam::coagulationCloud::moveOnThreads
             p.stepFraction() = 0;
             const label booked = threadTd.nBooked();
             const bool kept = p.move(*this, threadTd, dt);
-            moveKept_[k] =
+            moveOutcome_[k] =
                 kept ? keptByMove
               : threadTd.nBooked() > booked ? leftByOutflow
               : droppedByTracking;
@@ -316,21 +317,19 @@ void Foam::coagulationCloud::moveOnThreads
         }
     }
 
-    listRemoved_.assign(nParticles, 0);
     for (label k = 0; k < nParticles; ++k)
     {
-        if (moveKept_[k] != keptByMove)
+        if (moveOutcome_[k] != keptByMove)
         {
             coagulationParticle& p = *listParticles_[k];
-            if (moveKept_[k] == leftByOutflow)
+            if (moveOutcome_[k] == leftByOutflow)
             {
                 td.bookOutflow(p.patch(), p);
             }
             deleteParticle(p);
-            listRemoved_[k] = 1;
         }
     }
-    compactList();
+    compactList(moveOutcome_);
 }
 
 
@@ -503,7 +502,7 @@ Foam::coagulationCloud::coagulationCloud
     listValid_(false),
     cellListIndex_(),
     listRemoved_(),
-    moveKept_(),
+    moveOutcome_(),
     sorted_(false),
     workers_(),
     outcomes_(),
@@ -775,7 +774,7 @@ void Foam::coagulationCloud::coagulate(const scalar dt)
             listRemoved_[cellListIndex_[i]] = 1;
         }
     }
-    compactList();
+    compactList(listRemoved_);
 
     for (label celli = 0; celli < nCells; ++celli)
     {
