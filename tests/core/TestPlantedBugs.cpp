@@ -1,0 +1,289 @@
+// Paths that planted bugs went through unnoticed (issue 21): each test below fails on one
+// such one-line bug and is deterministic (fixed seeds, or an exactly constructed state).
+#include "TestHelpers.hpp"
+
+#include <sstream>
+
+using namespace coagtest;
+
+namespace {
+
+class PlantedBugCellTest : public ::testing::TestWithParam<std::string> {};
+
+//- With number control on, the cell never holds more than maxParticles particles after
+//  advance, however strong the inception (the halving after every inception keeps it there,
+//  not only the halving on entry). During the step the work memory (the sum tree, sized for
+//  at most maxParticles + 1 particles) must not grow either: it stays at most that of a cell
+//  that simply starts with maxParticles particles.
+TEST_P(PlantedBugCellTest, ParticleBoundHoldsAfterInception)
+{
+    const std::size_t maxParticles = 64;
+    const double w = 1.0;
+    AdditiveKernel kernel(1e-3);                        // tree columns for every algorithm
+    InceptionModel inception;
+    inception.rate = 2e4;  // V = 1, dt = 0.5: ~1e4 inceptions in the first step
+    inception.weight = w;
+    NumberControl ctl;
+    ctl.maxParticles = maxParticles;
+
+    // Reference work memory: a cell that starts at the bound, one short step.
+    std::size_t boundBytes = 0;
+    {
+        auto ref = makeCellAlgorithm(GetParam(), kernel, inception, ctl);
+        CellPopulation pop = monodisperse(maxParticles, 1.0, w);
+        Rng rng(1);
+        StepStatistics stats;
+        ref->advance(pop, 1e-9, rng, stats);
+        boundBytes = ref->workspaceBytes();
+        ASSERT_GT(boundBytes, 0u);
+    }
+
+    auto alg = makeCellAlgorithm(GetParam(), kernel, inception, ctl);
+    Rng rng(seedFor(2101, 0));
+    CellPopulation pop;
+    pop.volume = 1.0;
+    StepStatistics stats;
+    for (int step = 0; step < 4; ++step) {
+        alg->advance(pop, 0.5, rng, stats);
+        ASSERT_LE(pop.particles.size(), maxParticles) << GetParam() << " after step " << step;
+        ASSERT_GT(pop.particles.size(), 0u) << GetParam() << " after step " << step;
+        EXPECT_LE(alg->workspaceBytes(), boundBytes)
+            << GetParam() << ": the work memory grew past the bound during step " << step;
+    }
+    // DSA halves the volume, and with it the inception rate, so it inceps far less than SWA
+    EXPECT_GT(stats.inceptions, 4 * maxParticles) << GetParam();
+    EXPECT_GE(stats.halvings, 5u) << GetParam();
+}
+
+//- The incepted mass is sum(weight * mass) of the incepted particles, also for an inception
+//  weight other than 1, and it is exactly the growth of the represented mass (no number
+//  control). weight 2.5, mass 0.75: every product and partial sum is exact in binary.
+TEST_P(PlantedBugCellTest, InceptedMassCountsTheInceptionWeight)
+{
+    const double w = 2.5, m = 0.75;
+    ConstantKernel kernel(1.0);
+    InceptionModel inception;
+    inception.rate = 40.0;
+    inception.weight = w;
+    inception.type.mass = m;
+    auto alg = makeCellAlgorithm(GetParam(), kernel, inception);
+    Rng rng(seedFor(2103, 0));
+    CellPopulation pop = monodisperse(100, 250.0, w);  // DSA: weights = inception weight
+    const double m0 = totalMass(pop);
+    StepStatistics stats;
+    for (int step = 0; step < 5; ++step) alg->advance(pop, 0.2, rng, stats);
+    ASSERT_GT(stats.inceptions, 100u) << GetParam();
+    ASSERT_GT(stats.coagulations, 10u) << GetParam();
+    EXPECT_EQ(stats.inceptedMass, static_cast<double>(stats.inceptions) * w * m) << GetParam();
+    const double added = totalMass(pop) - m0;
+    EXPECT_NEAR(stats.inceptedMass, added, 1e-12 * totalMass(pop)) << GetParam();
+}
+
+INSTANTIATE_TEST_SUITE_P(Algorithms, PlantedBugCellTest, ::testing::Values("SWA", "DSA1", "DSA2"),
+                         [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
+
+} // namespace
+
+//- The solver sums the cells' tallies with operator+=: every field must be added.
+TEST(StepStatistics, PlusEqualsAddsEveryField)
+{
+    StepStatistics a;
+    a.coagulations = 1;
+    a.fictitious = 2;
+    a.inceptions = 3;
+    a.halvings = 4;
+    a.doublings = 5;
+    a.inceptedMass = 0.5;
+    StepStatistics b;
+    b.coagulations = 10;
+    b.fictitious = 200;
+    b.inceptions = 3000;
+    b.halvings = 40000;
+    b.doublings = 500000;
+    b.inceptedMass = 6.25;
+
+    StepStatistics& r = (a += b);
+    EXPECT_EQ(&r, &a);
+    EXPECT_EQ(a.coagulations, 11u);
+    EXPECT_EQ(a.fictitious, 202u);
+    EXPECT_EQ(a.inceptions, 3003u);
+    EXPECT_EQ(a.halvings, 40004u);
+    EXPECT_EQ(a.doublings, 500005u);
+    EXPECT_EQ(a.inceptedMass, 6.75);
+    // the right-hand side is unchanged
+    EXPECT_EQ(b.coagulations, 10u);
+    EXPECT_EQ(b.inceptedMass, 6.25);
+
+    // Summing real per-cell tallies gives the tally of all events.
+    ConstantKernel kernel(1.0);
+    InceptionModel inception{1.0, {}, 1.0};
+    NumberControl ctl;
+    ctl.maxParticles = 40;
+    ctl.minParticles = 20;
+    StepStatistics total, together;
+    for (const std::string name : {"SWA", "DSA1"}) {
+        auto alg = makeCellAlgorithm(name, kernel, name == "SWA" ? inception : InceptionModel{},
+                                     ctl);
+        Rng rng(seedFor(2102, name == "SWA" ? 0 : 1));
+        CellPopulation pop = monodisperse(100, 100.0);
+        StepStatistics cell;
+        alg->advance(pop, 30.0, rng, cell);
+        total += cell;
+        Rng again(seedFor(2102, name == "SWA" ? 0 : 1));
+        CellPopulation pop2 = monodisperse(100, 100.0);
+        alg->advance(pop2, 30.0, again, together);  // advance accumulates into its argument
+    }
+    EXPECT_GT(total.coagulations, 0u);
+    EXPECT_GT(total.inceptions, 0u);
+    EXPECT_GT(total.halvings, 0u);
+    EXPECT_GT(total.doublings, 0u);
+    EXPECT_GT(total.inceptedMass, 0.0);
+    EXPECT_EQ(total.coagulations, together.coagulations);
+    EXPECT_EQ(total.fictitious, together.fictitious);
+    EXPECT_EQ(total.inceptions, together.inceptions);
+    EXPECT_EQ(total.halvings, together.halvings);
+    EXPECT_EQ(total.doublings, together.doublings);
+    EXPECT_EQ(total.inceptedMass, together.inceptedMass);
+}
+
+//- Doubling (2.20) happens when sum N_l <= N/2, equality included. Two monomers, constant
+//  kernel, alpha = 1: each reacts with probability 1/2; when exactly one reaction happens
+//  (the two monomers merge) one particle of size 2 is left, exactly N/2, so the step must
+//  double it (2 particles of size 2, c doubled). The seeds below give that case several
+//  times (each with probability 1/2); the test checks that it was hit at all.
+TEST(NanbuPlantedBugs, DoublingThresholdIsInclusive)
+{
+    ConstantKernel kernel(1.0);
+    NanbuParameters params;
+    params.alpha = 1.0;
+    int hits = 0;
+    for (std::uint64_t s = 0; s < 32; ++s) {
+        NanbuSmoluchowski nanbu(kernel, {2}, 1.0, params);
+        Rng rng(seedFor(2104, s));
+        nanbu.step(rng);
+        const NanbuStatistics& st = nanbu.statistics();
+        if (st.reactions != 1) continue;  // 0: nothing happens; 2: truncation, 2 left
+        ++hits;
+        EXPECT_EQ(st.truncatedComponents, 0u) << "seed " << s;
+        EXPECT_EQ(st.doublings, 1u) << "seed " << s << ": sum N_l = N/2 must double";
+        EXPECT_EQ(nanbu.count(1), 0) << "seed " << s;
+        EXPECT_EQ(nanbu.count(2), 2) << "seed " << s;
+        EXPECT_EQ(nanbu.totalCount(), 2) << "seed " << s;
+        EXPECT_EQ(nanbu.normalization(), 2.0) << "seed " << s;
+    }
+    ASSERT_GT(hits, 3) << "the threshold case sum N_l = N/2 was never reached";
+}
+
+//- Delta_k (2.12) takes the maximum over all sizes i <= min(2^k L0, maxSize), not only the
+//  occupied ones. With the additive kernel sum_j N_j K_ij grows with i, so the maximum sits at
+//  the end of the range, which after a few steps lies well beyond the largest occupied size.
+TEST(NanbuPlantedBugs, TimeStepUsesTheWholeSizeRange)
+{
+    AdditiveKernel kernel(1.0);
+    NanbuParameters params;
+    params.alpha = 0.02;
+    params.maxSize = 1000;  // the range reaches the cap: 1, 2, 4, ..., 512, 1000
+    NanbuSmoluchowski nanbu(kernel, {20000}, 20000.0, params);
+    const std::size_t L0 = 1;
+    Rng rng(seedFor(2105, 0));
+    int beyond = 0;
+    for (int k = 0; k < 12; ++k) {
+        const std::size_t range = cappedDoublingRange(L0, nanbu.stepIndex(), params.maxSize);
+        const std::size_t largest = nanbu.largestSize();
+        ASSERT_LE(largest, range);
+        if (range > largest) ++beyond;
+        double maxRate = 0.0;
+        for (std::size_t i = 1; i <= range; ++i) {
+            double s = 0.0;
+            for (std::size_t m = 1; m <= largest; ++m) {
+                if (nanbu.count(m) > 0) {
+                    s += static_cast<double>(nanbu.count(m))
+                         * kernel(ParticleType{double(i)}, ParticleType{double(m)});
+                }
+            }
+            maxRate = std::max(maxRate, s);
+        }
+        const double expected = params.alpha * nanbu.normalization() / maxRate;
+        const double delta = nanbu.step(rng);
+        EXPECT_NEAR(delta, expected, 1e-12 * expected)
+            << "step " << k << ": range " << range << ", largest occupied size " << largest;
+    }
+    EXPECT_GE(beyond, 8);
+}
+
+namespace {
+
+//- The inverse of std::mt19937_64's output tempering (so that a crafted state word gives a
+//  chosen raw output).
+std::uint64_t untemper(std::uint64_t y)
+{
+    auto undoRight = [](std::uint64_t v, unsigned s, std::uint64_t mask) {
+        std::uint64_t x = v;
+        for (unsigned i = 0; i < 64 / s + 1; ++i) x = v ^ ((x >> s) & mask);
+        return x;
+    };
+    auto undoLeft = [](std::uint64_t v, unsigned s, std::uint64_t mask) {
+        std::uint64_t x = v;
+        for (unsigned i = 0; i < 64 / s + 1; ++i) x = v ^ ((x << s) & mask);
+        return x;
+    };
+    y = undoRight(y, 43, ~std::uint64_t(0));
+    y = undoLeft(y, 37, 0xfff7eee000000000ULL);
+    y = undoLeft(y, 17, 0x71d67fffeda60000ULL);
+    y = undoRight(y, 29, 0x5555555555555555ULL);
+    return y;
+}
+
+//- An Rng whose next raw 64-bit output is `raw`: the std::mt19937_64 text state (the 312
+//  words, then the position; libstdc++'s layout) with the word at position 0 chosen.
+//  Asserts on a copy of the engine that the crafted state does give `raw`.
+Rng rngWithNextRawOutput(std::uint64_t raw)
+{
+    Rng rng(1);
+    std::istringstream in(rng.state());
+    std::vector<std::uint64_t> words;
+    std::uint64_t v;
+    while (in >> v) words.push_back(v);
+    EXPECT_EQ(words.size(), std::mt19937_64::state_size + 1) << "unexpected state layout";
+    std::ostringstream out;
+    for (std::size_t i = 0; i < std::mt19937_64::state_size; ++i) {
+        out << (i == 0 ? untemper(raw) : words[i]) << ' ';
+    }
+    out << 0;  // position: the next output is word 0
+    rng.setState(out.str());
+    std::mt19937_64 copy = rng.engine();
+    EXPECT_EQ(copy(), raw) << "crafted state does not give the raw output";
+    return rng;
+}
+
+} // namespace
+
+TEST(RngPlantedBugs, UntemperInvertsTheTempering)
+{
+    // tempering of a known state word, checked against the engine itself
+    std::mt19937_64 e(7);
+    std::mt19937_64 copy = e;
+    const std::uint64_t out = copy();
+    Rng rng = rngWithNextRawOutput(out);
+    std::mt19937_64 crafted = rng.engine();
+    EXPECT_EQ(crafted(), out);
+}
+
+//- A raw output of 0 must not give uniform() == 0 (an infinite exponential waiting time).
+TEST(RngPlantedBugs, UniformIsPositiveAtRawZero)
+{
+    Rng rng = rngWithNextRawOutput(0);
+    const double u = rng.uniform();
+    EXPECT_GT(u, 0.0);
+    EXPECT_LT(u, 1.0);
+    EXPECT_EQ(u, std::ldexp(1.0, -54));  // 53 bits, centred in their bin: (0 + 1/2) 2^-53
+
+    Rng rng2 = rngWithNextRawOutput(0);
+    const double t = rng2.exponential(1.0);
+    EXPECT_TRUE(std::isfinite(t)) << t;
+    EXPECT_NEAR(t, 54.0 * std::log(2.0), 1e-12);
+
+    // the smallest raw value that does not share uniform()'s lowest bin
+    Rng rng3 = rngWithNextRawOutput(std::uint64_t(1) << 11);
+    EXPECT_EQ(rng3.uniform(), 3.0 * std::ldexp(1.0, -54));
+}
