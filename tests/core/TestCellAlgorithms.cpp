@@ -2,6 +2,7 @@
 #include "TestHelpers.hpp"
 
 #include <algorithm>
+#include <chrono>
 
 using namespace coagtest;
 
@@ -368,3 +369,49 @@ INSTANTIATE_TEST_SUITE_P(Algorithms, ReferenceKernelTest, ::testing::Values("SWA
                          [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
 } // namespace
+
+//- A step that would take far too many events (a huge kernel) stops at once with a message
+//  instead of running for days; a large but sane step is untouched by the limit.
+TEST_P(CellAlgorithmTest, RefusesAStepWithFarTooManyEvents)
+{
+    auto kernel = makeKernel("constant", 1e30);
+    auto alg = makeCellAlgorithm(GetParam(), *kernel, InceptionModel{});
+    Rng rng(2113);
+    CellPopulation pop = monodisperse(100, 1.0);
+    StepStatistics stats;
+    const auto start = std::chrono::steady_clock::now();
+    EXPECT_THROW(alg->advance(pop, 1.0, rng, stats), std::runtime_error);
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+    EXPECT_EQ(stats.coagulations + stats.fictitious, 0u);
+
+    // 1e5 expected events: well inside the limit
+    auto sane = makeKernel("constant", 1.0);
+    auto alg2 = makeCellAlgorithm(GetParam(), *sane, InceptionModel{});
+    CellPopulation pop2 = monodisperse(1000, 1000.0);
+    EXPECT_NO_THROW(alg2->advance(pop2, 0.2, rng, stats));
+}
+
+//- Number control is unbiased but not conservative: every halving's change of sum(w m) is
+//  booked in controlMass, so that a mass balance closes to round-off.
+//  (SWA: DSA halving halves the sample volume instead, and the layer refuses it.)
+TEST(SwaNumberControl, BooksTheMassItChanges)
+{
+    auto kernel = makeKernel("additive", 1.0);
+    InceptionModel inception;
+    inception.rate = 50.0;
+    inception.type.mass = 1.0;
+    NumberControl control;
+    control.maxParticles = 64;
+    auto alg = makeCellAlgorithm("SWA", *kernel, inception, control);
+    Rng rng(2114);
+    CellPopulation pop = monodisperse(60, 60.0);
+    StepStatistics stats;
+    const double m0 = totalMass(pop);
+    for (int step = 0; step < 200; ++step) {
+        alg->advance(pop, 1e-2, rng, stats);
+        const double m = totalMass(pop);
+        ASSERT_NEAR(m, m0 + stats.inceptedMass + stats.controlMass, 1e-12 * m) << step;
+    }
+    EXPECT_GT(stats.halvings, 10u);
+    EXPECT_NE(stats.controlMass, 0.0);
+}

@@ -1,6 +1,11 @@
 #include "TestHelpers.hpp"
 
+#include <csignal>
 #include <filesystem>
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 using namespace coagtest;
 
@@ -101,4 +106,78 @@ TEST(MomentSeriesFile, MissingFileThrows)
 {
     EXPECT_THROW(MomentSeriesReader("/nonexistent/dir/file.h5"), std::runtime_error);
     EXPECT_THROW(MomentSeriesWriter("/nonexistent/dir/file.h5", {}, 4), std::runtime_error);
+}
+
+namespace {
+
+//- One sample of 50 cells x 4 moments, every value s + 1
+std::vector<double> sampleValues(int s)
+{
+    return std::vector<double>(200, double(s) + 1.0);
+}
+
+//- In a child process: 20 samples flushed, then body(writer); the child's exit code
+int inChild(const std::string& path, const std::function<int(MomentSeriesWriter&)>& body)
+{
+    const pid_t pid = fork();
+    if (pid == 0) {
+        std::vector<std::array<double, 3>> centres(50, {0.0, 0.0, 0.0});
+        MomentSeriesWriter w(path, centres, 4);
+        w.setAttribute("algorithm", "SWA");
+        for (int s = 0; s < 20; ++s) w.append(double(s), sampleValues(s));
+        w.flush();
+        _exit(body(w));
+    }
+    int status = 0;
+    waitpid(pid, &status, 0);
+    return status;
+}
+
+void expectFlushedSamples(const std::string& path)
+{
+    MomentSeriesReader r(path);
+    ASSERT_EQ(r.nSamples(), 20u);
+    EXPECT_EQ(r.value(19, 49, 3), 20.0);
+    EXPECT_EQ(r.stringAttribute("algorithm"), "SWA");
+}
+
+} // namespace
+
+//- Killed after a flush, with more samples appended: the file holds every flushed sample.
+TEST(MomentSeriesFile, SurvivesAKillBetweenFlushes)
+{
+    const std::string path = tempFile("killed.h5");
+    const int status = inChild(path, [](MomentSeriesWriter& w) {
+        // past HDF5's chunk cache, so that a writer that writes in place has to
+        for (int s = 20; s < 20000; ++s) w.append(double(s), sampleValues(s));
+        raise(SIGKILL);
+        return 0;
+    });
+    ASSERT_TRUE(WIFSIGNALED(status));
+    expectFlushedSamples(path);
+    EXPECT_FALSE(std::filesystem::exists(path + ".tmp"));
+}
+
+//- A flush that meets a full disk (here a file size limit, EFBIG) throws and leaves the file
+//  with every sample of the flushes before; the samples held are kept for another try.
+TEST(MomentSeriesFile, SurvivesAFullDisk)
+{
+    const std::string path = tempFile("full.h5");
+    const int status = inChild(path, [&path](MomentSeriesWriter& w) {
+        signal(SIGXFSZ, SIG_IGN);
+        rlimit limit{};
+        limit.rlim_cur = limit.rlim_max = std::filesystem::file_size(path) + 1024;
+        if (setrlimit(RLIMIT_FSIZE, &limit) != 0) return 10;
+        for (int s = 20; s < 400; ++s) w.append(double(s), sampleValues(s));
+        try {
+            w.flush();
+        } catch (const std::runtime_error&) {
+            return w.nSamples() == 400 ? 0 : 13;
+        }
+        return 11;  // the flush did not fail
+    });
+    ASSERT_TRUE(WIFEXITED(status)) << "the child died of signal " << WTERMSIG(status);
+    ASSERT_EQ(WEXITSTATUS(status), 0);
+    expectFlushedSamples(path);
+    EXPECT_FALSE(std::filesystem::exists(path + ".tmp"));
 }

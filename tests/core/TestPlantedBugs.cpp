@@ -94,6 +94,7 @@ TEST(StepStatistics, PlusEqualsAddsEveryField)
     a.halvings = 4;
     a.doublings = 5;
     a.inceptedMass = 0.5;
+    a.controlMass = -0.25;
     StepStatistics b;
     b.coagulations = 10;
     b.fictitious = 200;
@@ -101,6 +102,7 @@ TEST(StepStatistics, PlusEqualsAddsEveryField)
     b.halvings = 40000;
     b.doublings = 500000;
     b.inceptedMass = 6.25;
+    b.controlMass = 1.5;
 
     StepStatistics& r = (a += b);
     EXPECT_EQ(&r, &a);
@@ -110,6 +112,7 @@ TEST(StepStatistics, PlusEqualsAddsEveryField)
     EXPECT_EQ(a.halvings, 40004u);
     EXPECT_EQ(a.doublings, 500005u);
     EXPECT_EQ(a.inceptedMass, 6.75);
+    EXPECT_EQ(a.controlMass, 1.25);
     // the right-hand side is unchanged
     EXPECT_EQ(b.coagulations, 10u);
     EXPECT_EQ(b.inceptedMass, 6.25);
@@ -144,6 +147,8 @@ TEST(StepStatistics, PlusEqualsAddsEveryField)
     EXPECT_EQ(total.halvings, together.halvings);
     EXPECT_EQ(total.doublings, together.doublings);
     EXPECT_EQ(total.inceptedMass, together.inceptedMass);
+    EXPECT_NE(total.controlMass, 0.0);
+    EXPECT_EQ(total.controlMass, together.controlMass);
 }
 
 //- Doubling (2.20) happens when sum N_l <= N/2, equality included. Two monomers, constant
@@ -286,4 +291,22 @@ TEST(RngPlantedBugs, UniformIsPositiveAtRawZero)
     // the smallest raw value that does not share uniform()'s lowest bin
     Rng rng3 = rngWithNextRawOutput(std::uint64_t(1) << 11);
     EXPECT_EQ(rng3.uniform(), 3.0 * std::ldexp(1.0, -54));
+}
+
+//- The top bin: (2^53 - 1 + 1/2) 2^-53 rounds to 1 in double precision; uniform() must stay
+//  below 1 (a zero waiting time, a point at the very end of a tree's total), and every other
+//  bin keeps its value (so that seeded results do not change).
+TEST(RngPlantedBugs, UniformIsBelowOneAtRawMaximum)
+{
+    for (const std::uint64_t raw : {~std::uint64_t(0), ~std::uint64_t(0) << 11}) {
+        Rng rng = rngWithNextRawOutput(raw);
+        const double u = rng.uniform();
+        EXPECT_LT(u, 1.0) << std::hex << raw;
+        EXPECT_EQ(u, 1.0 - std::ldexp(1.0, -53));  // the largest double below 1
+        Rng rng2 = rngWithNextRawOutput(raw);
+        EXPECT_GT(rng2.exponential(1.0), 0.0);
+    }
+    // the bin below the top one is unchanged: (2^53 - 2 + 1/2) 2^-53
+    Rng rng = rngWithNextRawOutput((~std::uint64_t(0) << 11) - (std::uint64_t(1) << 11));
+    EXPECT_EQ(rng.uniform(), (9007199254740990.0 + 0.5) * std::ldexp(1.0, -53));
 }

@@ -13,6 +13,14 @@ namespace {
 
 enum class Mode { SWA, DSA1, DSA2 };
 
+//- sum_j w_j m_j: the physical mass a population stands for (per unit sample volume V)
+double physicalMass(const std::vector<Particle>& P)
+{
+    double s = 0.0;
+    for (const Particle& p : P) s += p.weight * p.type.mass;
+    return s;
+}
+
 //- SWA, DSA1 and DSA2 share the majorant/tree machinery; they differ in the pair rate
 //  factor (ordered pairs K w2/V versus K w/(2V)) and in the coagulation jump.
 //
@@ -172,6 +180,7 @@ void ParticleCellAlgorithm::halve(CellPopulation& pop, Rng& rng, StepStatistics&
 {
     std::vector<Particle>& P = pop.particles;
     const std::size_t n = P.size();
+    const double massBefore = physicalMass(P);
     std::size_t keep = n / 2;
     if ((n % 2) == 1 && rng.uniform() < 0.5) ++keep;
     // Partial Fisher-Yates: the first `keep` entries become a uniform random subset.
@@ -185,6 +194,8 @@ void ParticleCellAlgorithm::halve(CellPopulation& pop, Rng& rng, StepStatistics&
     } else {
         for (Particle& p : P) p.weight *= 2.0;
     }
+    // Unbiased, but not conservative: the change is booked for mass balances
+    stats.controlMass += physicalMass(P) - massBefore;
     ++stats.halvings;
     buildTree(P, tree_.capacity());
 }
@@ -193,6 +204,7 @@ void ParticleCellAlgorithm::duplicate(CellPopulation& pop, StepStatistics& stats
 {
     std::vector<Particle>& P = pop.particles;
     const std::size_t n = P.size();
+    const double massBefore = physicalMass(P);
     P.reserve(2 * n);
     for (std::size_t i = 0; i < n; ++i) {
         Particle c = P[i];
@@ -200,6 +212,7 @@ void ParticleCellAlgorithm::duplicate(CellPopulation& pop, StepStatistics& stats
         P.push_back(c);
     }
     pop.volume *= 2.0;
+    stats.controlMass += physicalMass(P) - massBefore;
     ++stats.doublings;
     buildTree(P, std::max(tree_.capacity(), P.size()));
 }
@@ -291,6 +304,15 @@ void ParticleCellAlgorithm::advance(CellPopulation& pop, double dt, Rng& rng,
         if (!std::isfinite(totalRate)) {
             throw std::runtime_error("coag::" + name()
                                      + "::advance: total event rate is not finite (gelation?)");
+        }
+        if (totalRate * (dt - t) > maxExpectedEvents) {
+            std::ostringstream os;
+            os << "coag::" << name() << "::advance: " << totalRate * (dt - t)
+               << " events expected in the rest of the step (limit " << maxExpectedEvents
+               << ", " << n << " particles, volume " << V
+               << "): the kernel or inception rate is far too large for the step, or the "
+                  "population is past gelation";
+            throw std::runtime_error(os.str());
         }
         t += rng.exponential(totalRate);
         if (!(t <= dt)) break;

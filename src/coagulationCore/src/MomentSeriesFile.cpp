@@ -3,6 +3,9 @@
 #include <H5Cpp.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -27,12 +30,63 @@ void silenceHdf5()
 // ---------------------------------------------------------------------------- writer
 
 struct MomentSeriesWriter::Impl {
-    std::unique_ptr<H5::H5File> file;
-    H5::DataSet time;
-    H5::DataSet moments;
+    std::string path;
     std::size_t nCells = 0;
     int nMoments = 0;
-    std::size_t nSamples = 0;
+    std::size_t nOnDisk = 0;
+    std::vector<double> pendingTimes;
+    std::vector<double> pendingValues;
+
+    //- Apply change to the file in memory (HDF5's core driver), write the image to
+    //  <path>.tmp with plain stdio, then rename it over the file. HDF5 does no file I/O of
+    //  its own, so an I/O failure (a full disk) is met here, where the file is untouched;
+    //  it throws std::runtime_error naming where.
+    template<class Change>
+    void modify(const char* where, Change&& change, bool create = false)
+    {
+        const std::string tmp = path + ".tmp";
+        std::vector<char> image;
+        try {
+            H5::FileAccPropList fapl;
+            fapl.setCore(1 << 20, false);
+            H5::H5File file(path, create ? H5F_ACC_TRUNC : H5F_ACC_RDWR,
+                            H5::FileCreatPropList::DEFAULT, fapl);
+            change(file);
+            file.flush(H5F_SCOPE_GLOBAL);
+            const ssize_t size = H5Fget_file_image(file.getId(), nullptr, 0);
+            if (size < 0) throw std::runtime_error("H5Fget_file_image failed");
+            image.resize(static_cast<std::size_t>(size));
+            if (H5Fget_file_image(file.getId(), image.data(), image.size()) != size) {
+                throw std::runtime_error("H5Fget_file_image failed");
+            }
+            file.close();
+        } catch (const H5::Exception& e) {
+            rethrow(where, e);
+        }
+
+        std::FILE* out = std::fopen(tmp.c_str(), "wb");
+        bool ok = out != nullptr;
+        int error = ok ? 0 : errno;
+        if (ok) {
+            ok = std::fwrite(image.data(), 1, image.size(), out) == image.size();
+            if (!ok) error = errno;
+            if (std::fclose(out) != 0 && ok) {
+                ok = false;
+                error = errno;
+            }
+        }
+        if (ok && std::rename(tmp.c_str(), path.c_str()) != 0) {
+            ok = false;
+            error = errno;
+        }
+        if (!ok) {
+            std::remove(tmp.c_str());
+            throw std::runtime_error(std::string("coag::") + where + ": cannot write "
+                                     + std::to_string(image.size()) + " bytes to " + tmp
+                                     + ": " + std::strerror(error)
+                                     + "; " + path + " is left as it was");
+        }
+    }
 };
 
 MomentSeriesWriter::MomentSeriesWriter(const std::string& path,
@@ -45,16 +99,15 @@ MomentSeriesWriter::MomentSeriesWriter(const std::string& path,
     }
     silenceHdf5();
     Impl& d = *impl_;
+    d.path = path;
     d.nCells = cellCentres.size();
     d.nMoments = nMoments;
-    try {
-        d.file = std::make_unique<H5::H5File>(path, H5F_ACC_TRUNC);
-
+    d.modify("MomentSeriesWriter", [&](H5::H5File& file) {
         // /cellCentres
         {
             const hsize_t dims[2] = {d.nCells, 3};
             H5::DataSpace space(2, dims);
-            H5::DataSet ds = d.file->createDataSet("cellCentres", H5::PredType::NATIVE_DOUBLE, space);
+            H5::DataSet ds = file.createDataSet("cellCentres", H5::PredType::NATIVE_DOUBLE, space);
             if (d.nCells > 0) ds.write(cellCentres.data(), H5::PredType::NATIVE_DOUBLE);
         }
         // /time
@@ -65,7 +118,7 @@ MomentSeriesWriter::MomentSeriesWriter(const std::string& path,
             H5::DataSpace space(1, dims, maxDims);
             H5::DSetCreatPropList plist;
             plist.setChunk(1, chunk);
-            d.time = d.file->createDataSet("time", H5::PredType::NATIVE_DOUBLE, space, plist);
+            file.createDataSet("time", H5::PredType::NATIVE_DOUBLE, space, plist);
         }
         // /moments: chunks of about 64k values, whole moment vectors per cell.
         {
@@ -80,45 +133,52 @@ MomentSeriesWriter::MomentSeriesWriter(const std::string& path,
             H5::DataSpace space(3, dims, maxDims);
             H5::DSetCreatPropList plist;
             plist.setChunk(3, chunk);
-            d.moments = d.file->createDataSet("moments", H5::PredType::NATIVE_DOUBLE, space, plist);
+            file.createDataSet("moments", H5::PredType::NATIVE_DOUBLE, space, plist);
         }
-    } catch (const H5::Exception& e) {
-        rethrow("MomentSeriesWriter", e);
+    }, true);
+}
+
+MomentSeriesWriter::~MomentSeriesWriter()
+{
+    // What was appended since the last flush, if the file can still take it
+    if (impl_) {
+        try {
+            flush();
+        } catch (...) {
+        }
     }
 }
 
-MomentSeriesWriter::~MomentSeriesWriter() = default;
 MomentSeriesWriter::MomentSeriesWriter(MomentSeriesWriter&&) noexcept = default;
 MomentSeriesWriter& MomentSeriesWriter::operator=(MomentSeriesWriter&&) noexcept = default;
 
-std::size_t MomentSeriesWriter::nSamples() const { return impl_->nSamples; }
+std::size_t MomentSeriesWriter::nSamples() const
+{
+    return impl_->nOnDisk + impl_->pendingTimes.size();
+}
 std::size_t MomentSeriesWriter::nCells() const { return impl_->nCells; }
 int MomentSeriesWriter::nMoments() const { return impl_->nMoments; }
 
 void MomentSeriesWriter::setAttribute(const std::string& name, double v)
 {
-    try {
-        H5::Group root = impl_->file->openGroup("/");
+    impl_->modify("MomentSeriesWriter::setAttribute", [&](H5::H5File& file) {
+        H5::Group root = file.openGroup("/");
         if (root.attrExists(name)) root.removeAttr(name);
         H5::Attribute a =
             root.createAttribute(name, H5::PredType::NATIVE_DOUBLE, H5::DataSpace(H5S_SCALAR));
         a.write(H5::PredType::NATIVE_DOUBLE, &v);
-    } catch (const H5::Exception& e) {
-        rethrow("MomentSeriesWriter::setAttribute", e);
-    }
+    });
 }
 
 void MomentSeriesWriter::setAttribute(const std::string& name, const std::string& v)
 {
-    try {
-        H5::Group root = impl_->file->openGroup("/");
+    impl_->modify("MomentSeriesWriter::setAttribute", [&](H5::H5File& file) {
+        H5::Group root = file.openGroup("/");
         if (root.attrExists(name)) root.removeAttr(name);
         H5::StrType type(H5::PredType::C_S1, std::max<std::size_t>(1, v.size()));
         H5::Attribute a = root.createAttribute(name, type, H5::DataSpace(H5S_SCALAR));
         a.write(type, v);
-    } catch (const H5::Exception& e) {
-        rethrow("MomentSeriesWriter::setAttribute", e);
-    }
+    });
 }
 
 void MomentSeriesWriter::append(double time, const std::vector<double>& values)
@@ -131,44 +191,46 @@ void MomentSeriesWriter::append(double time, const std::vector<double>& values)
            << " values (nCells*nMoments), got " << values.size();
         throw std::invalid_argument(os.str());
     }
-    try {
-        const hsize_t n = d.nSamples;
-        {
-            const hsize_t newDims[1] = {n + 1};
-            d.time.extend(newDims);
-            H5::DataSpace file = d.time.getSpace();
-            const hsize_t start[1] = {n};
-            const hsize_t count[1] = {1};
-            file.selectHyperslab(H5S_SELECT_SET, count, start);
-            H5::DataSpace mem(1, count);
-            d.time.write(&time, H5::PredType::NATIVE_DOUBLE, mem, file);
-        }
-        {
-            const hsize_t nm = static_cast<hsize_t>(d.nMoments);
-            const hsize_t newDims[3] = {n + 1, d.nCells, nm};
-            d.moments.extend(newDims);
-            if (expected > 0) {
-                H5::DataSpace file = d.moments.getSpace();
-                const hsize_t start[3] = {n, 0, 0};
-                const hsize_t count[3] = {1, d.nCells, nm};
-                file.selectHyperslab(H5S_SELECT_SET, count, start);
-                H5::DataSpace mem(3, count);
-                d.moments.write(values.data(), H5::PredType::NATIVE_DOUBLE, mem, file);
-            }
-        }
-        ++d.nSamples;
-    } catch (const H5::Exception& e) {
-        rethrow("MomentSeriesWriter::append", e);
-    }
+    d.pendingTimes.push_back(time);
+    d.pendingValues.insert(d.pendingValues.end(), values.begin(), values.end());
 }
 
 void MomentSeriesWriter::flush()
 {
-    try {
-        impl_->file->flush(H5F_SCOPE_GLOBAL);
-    } catch (const H5::Exception& e) {
-        rethrow("MomentSeriesWriter::flush", e);
-    }
+    Impl& d = *impl_;
+    if (d.pendingTimes.empty()) return;
+    const hsize_t n = d.nOnDisk;
+    const hsize_t k = d.pendingTimes.size();
+    d.modify("MomentSeriesWriter::flush", [&](H5::H5File& file) {
+        {
+            H5::DataSet time = file.openDataSet("time");
+            const hsize_t newDims[1] = {n + k};
+            time.extend(newDims);
+            H5::DataSpace space = time.getSpace();
+            const hsize_t start[1] = {n};
+            const hsize_t count[1] = {k};
+            space.selectHyperslab(H5S_SELECT_SET, count, start);
+            H5::DataSpace mem(1, count);
+            time.write(d.pendingTimes.data(), H5::PredType::NATIVE_DOUBLE, mem, space);
+        }
+        {
+            H5::DataSet moments = file.openDataSet("moments");
+            const hsize_t nm = static_cast<hsize_t>(d.nMoments);
+            const hsize_t newDims[3] = {n + k, d.nCells, nm};
+            moments.extend(newDims);
+            if (!d.pendingValues.empty()) {
+                H5::DataSpace space = moments.getSpace();
+                const hsize_t start[3] = {n, 0, 0};
+                const hsize_t count[3] = {k, d.nCells, nm};
+                space.selectHyperslab(H5S_SELECT_SET, count, start);
+                H5::DataSpace mem(3, count);
+                moments.write(d.pendingValues.data(), H5::PredType::NATIVE_DOUBLE, mem, space);
+            }
+        }
+    });
+    d.nOnDisk += k;
+    d.pendingTimes.clear();
+    d.pendingValues.clear();
 }
 
 // ---------------------------------------------------------------------------- reader

@@ -22,6 +22,8 @@ struct StepStatistics {
     std::uint64_t halvings = 0;      //!< number-control halvings
     std::uint64_t doublings = 0;     //!< number-control doublings
     double inceptedMass = 0;         //!< physical mass added by inception = sum(weight*mass)
+    double controlMass = 0;          //!< change of sum(w*m) by number control (SWA: zero mean;
+                                     //!< DSA: the sample volume changes with it)
 
     //- Add another tally (e.g. one cell's, to a run's total)
     StepStatistics& operator+=(const StepStatistics& o)
@@ -32,6 +34,7 @@ struct StepStatistics {
         halvings += o.halvings;
         doublings += o.doublings;
         inceptedMass += o.inceptedMass;
+        controlMass += o.controlMass;
         return *this;
     }
 };
@@ -70,11 +73,18 @@ public:
     virtual ~CellAlgorithm() = default;
     virtual std::string name() const = 0;  //!< "SWA", "DSA1", "DSA2"
 
+    //- Limit on the expected number of events left in one advance() call (about 20 s of
+    //  events in one cell; the paper's largest runs need about 1e6).
+    static constexpr double maxExpectedEvents = 1e8;
+
     //- Advance one homogeneous cell over dt as an exact jump process (inception +
     //  coagulation). Particles may be modified, added (tag -1: the caller
     //  places them) and (DSA) removed; the order of pop.particles is not preserved; DSA number
     //  control may change pop.volume. Accumulates into stats.
-    //  Throws std::invalid_argument for dt < 0, volume <= 0, and (DSA) unequal weights.
+    //  Throws std::invalid_argument for dt < 0, volume <= 0, and (DSA) unequal weights;
+    //  std::runtime_error when the event rate is not finite (gelation, overflow) or when the
+    //  events still expected in the step, rate*(dt - t), exceed maxExpectedEvents (a kernel,
+    //  inception rate or dt far too large: the step would not end in any useful time).
     virtual void advance(CellPopulation& pop, double dt, Rng& rng, StepStatistics& stats) = 0;
 
     //- Bytes of reusable work memory (the sum tree) currently held; for diagnostics.

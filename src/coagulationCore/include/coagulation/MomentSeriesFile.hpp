@@ -16,6 +16,15 @@ namespace coag {
 //    /moments      double [nSamples][nCells][nMoments]  (extendible, chunked)
 //    root attributes: doubles and strings set with setAttribute.
 //  The constructor creates (truncates) the file. HDF5 errors become std::runtime_error.
+//
+//  Crash safety: the file on disk is always a complete, closed HDF5 file. Samples are kept
+//  in memory until flush(); every change (flush, setAttribute) is made to the file read
+//  into memory (HDF5's core driver), whose image is written to <path>.tmp and renamed over
+//  the file (rename(2) is atomic). A kill at any moment leaves the file as of the last
+//  flush, and a failure (a full disk) leaves it untouched and throws std::runtime_error,
+//  the unflushed samples still held for another try. The cost is reading and writing the
+//  whole file per flush, and holding it in memory meanwhile: flush at write times, not at
+//  every sample.
 class MomentSeriesWriter {
 public:
     MomentSeriesWriter(const std::string& path,
@@ -33,13 +42,14 @@ public:
     //- Overload so that string literals do not convert to double... or bool.
     void setAttribute(const std::string& name, const char* v) { setAttribute(name, std::string(v)); }
 
-    //- Append one sample; values has nCells*nMoments entries, cell-major
-    //  (values[cell*nMoments + k]); otherwise std::invalid_argument.
+    //- Append one sample (held in memory until flush); values has nCells*nMoments
+    //  entries, cell-major (values[cell*nMoments + k]); otherwise std::invalid_argument.
     void append(double time, const std::vector<double>& values);
 
-    //- Flush everything written so far to disk.
+    //- Write the samples held in memory to the file (atomically, see above).
     void flush();
 
+    //- Samples on disk and held in memory.
     std::size_t nSamples() const;
     std::size_t nCells() const;
     int nMoments() const;

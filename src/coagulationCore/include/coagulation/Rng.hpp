@@ -13,10 +13,14 @@ class Rng {
 public:
     explicit Rng(std::uint64_t seed) : engine_(seed) {}
 
-    //- Uniform on the open interval (0,1): 53 random bits, centred in their bin.
+    //- Uniform on the open interval (0,1): 53 random bits, centred in their bin. The top
+    //  bin's centre, 1 - 2^-54, is not a double and would round to 1: it becomes 1 - 2^-53,
+    //  the largest double below 1 (every other bin is exact, so no other draw changes).
     double uniform()
     {
-        return (static_cast<double>(engine_() >> 11) + 0.5) * (1.0 / 9007199254740992.0);  // 2^-53
+        const double u =
+            (static_cast<double>(engine_() >> 11) + 0.5) * (1.0 / 9007199254740992.0);  // 2^-53
+        return u < 1.0 ? u : 1.0 - 1.0 / 9007199254740992.0;  // 1 - 2^-53
     }
 
     //- Exponentially distributed with the given rate (> 0).
