@@ -1,24 +1,27 @@
 #!/bin/bash
-# Every required entry of constant/coagulationProperties, missing or wrong, stops the
-# solver with an OpenFOAM FatalIOError that names the entry (no crash, no default).
+# Every entry of constant/coagulationProperties, missing, wrong or unknown (a typo), and
+# the time controls that would make a run do nothing, stop the solver with an OpenFOAM
+# FatalIOError that names the file and the entry (no crash, no silent default).
 . "$(dirname "$0")/caseLib.sh"
 
 base=$(newCase constantKernelDuct badInput_base)
 passed=0
 
-# expectFatal name expectedText foamDictionaryArgs...
+# expectFatal name expectedText foamDictionaryArgs...   (on $file, coagulationProperties
+# unless set)
+file=constant/coagulationProperties
 expectFatal()
 {
     local name="$1" expected="$2"; shift 2
     local case="$workDir/badInput_$name"
     rm -rf "$case"; cp -r "$base" "$case"
-    (cd "$case" && foamDictionary constant/coagulationProperties "$@" > /dev/null)
+    (cd "$case" && foamDictionary "$file" "$@" > /dev/null)
     if coagulationFoam -case "$case" > "$case/log" 2>&1; then
         fail "$name: coagulationFoam accepted bad input"
     fi
     grep -q "FOAM FATAL IO ERROR" "$case/log" || { tail -20 "$case/log"; fail "$name: no FatalIOError"; }
     grep -q -- "$expected" "$case/log" || { tail -20 "$case/log"; fail "$name: error does not name '$expected'"; }
-    grep -q "coagulationProperties" "$case/log" || fail "$name: error does not name the file"
+    grep -q "$(basename "$file")" "$case/log" || fail "$name: error does not name the file"
     passed=$((passed + 1))
     echo "ok $name"
 }
@@ -41,6 +44,26 @@ expectFatal missingSeed        "seed"             -entry seed -remove
 expectFatal negativeSeed       "seed"             -entry seed -set -5
 expectFatal missingSampling    "sampling"         -entry sampling -remove
 expectFatal badSampleInterval  "sampleInterval"   -entry sampling/sampleInterval -set 1.5e-4
+
+# Unknown keywords are typos, in every dictionary (issue 13)
+expectFatal unknownTopLevel    "inceptoin"        -entry inceptoin -set "{ rate 1; }"
+expectFatal typoCellZone       "cellzone"         -entry inception/cellzone -set flame
+expectFatal typoInflow         "inflw"            -entry inflw -set "{ patches (inlet); density 1e9; mass 1; }"
+expectFatal typoMaxParticles   "maxParticlesPerCel" -entry numberControl -set "{ maxParticlesPerCel 100; }"
+expectFatal typoKernel         "K00"              -entry kernel/K00 -set 1
+expectFatal typoSampling       "tRelx"            -entry sampling/tRelx -set 1
+expectFatal typoV1             "SWB"              -entry statisticalWeight/V1/SWB -set 1
+# Values that used to be taken without a word
+expectFatal negativeMaxParticles "maxParticlesPerCell" -entry numberControl -set "{ maxParticlesPerCell -1; }"
+expectFatal oneMaxParticles    "maxParticlesPerCell" -entry numberControl -set "{ maxParticlesPerCell 1; }"
+expectFatal inflowOnOutlet     "no inward flow"   -entry inflow -set "{ patches (outlet); density 1e9; mass 1; }"
+expectFatal inflowNoPatches    "lists no patch"   -entry inflow -set "{ patches (); density 1e9; mass 1; }"
+expectFatal longSampleInterval "sampleInterval"   -entry sampling/sampleInterval -set 5
+file=system/controlDict
+expectFatal endTimeBelowStep   "endTime"          -entry endTime -set 4e-5
+expectFatal courantAboveOne    "deltaT"           -entry deltaT -set 0.01
+file=constant/coagulationProperties
+
 (cd "$base" && foamDictionary constant/coagulationProperties -entry algorithm -set DSA1 > /dev/null)
 expectFatal dsaNumberControl   "maxParticlesPerCell" -entry numberControl -set "{ maxParticlesPerCell 100; }"
 

@@ -28,6 +28,7 @@ Description
 #include "coagulationCloud.H"
 #include "coagulationSampler.H"
 #include "splitStepTimer.H"
+#include "caseChecks.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -48,6 +49,10 @@ int main(int argc, char *argv[])
 
     while (runTime.run())
     {
+        // The last write is complete once run() has had the function
+        // objects write too: mark it so for restarts
+        cloud.completeWrite();
+
         ++runTime;
         const scalar splitTimeStep = runTime.deltaTValue();
 
@@ -74,6 +79,10 @@ int main(int argc, char *argv[])
             timer.report(cloud.events());
         }
     }
+
+    sampler.flush();
+    cloud.completeWrite();
+    cloud.checkBalance();
 
     Info<< "End\n" << endl;
 

@@ -9,6 +9,9 @@
 #include "zeroGradientFvPatchFields.H"
 #include "processorPolyPatch.H"
 #include "registerSwitch.H"
+#include "caseChecks.H"
+
+#include <cfenv>
 
 #include <random>
 #include <cstdlib>
@@ -49,11 +52,12 @@ inline uint64_t mix64(uint64_t z)
 Foam::scalar getPositive(const Foam::dictionary& dict, const Foam::word& key)
 {
     const Foam::scalar value = dict.get<Foam::scalar>(key);
-    if (!(value > 0))
+    if (!(value > 0) || !std::isfinite(value))
     {
         FatalIOErrorInFunction(dict)
             << "Entry '" << key << "' = " << value << " in " << dict.name()
-            << " must be positive" << Foam::nl << Foam::exit(Foam::FatalIOError);
+            << " must be positive and finite" << Foam::nl
+            << Foam::exit(Foam::FatalIOError);
     }
     return value;
 }
@@ -62,11 +66,11 @@ Foam::scalar getPositive(const Foam::dictionary& dict, const Foam::word& key)
 Foam::scalar getNonNegative(const Foam::dictionary& dict, const Foam::word& key)
 {
     const Foam::scalar value = dict.get<Foam::scalar>(key);
-    if (!(value >= 0))
+    if (!(value >= 0) || !std::isfinite(value))
     {
         FatalIOErrorInFunction(dict)
             << "Entry '" << key << "' = " << value << " in " << dict.name()
-            << " must not be negative" << Foam::nl
+            << " must be finite and not negative" << Foam::nl
             << Foam::exit(Foam::FatalIOError);
     }
     return value;
@@ -79,6 +83,7 @@ Foam::scalar getNonNegative(const Foam::dictionary& dict, const Foam::word& key)
 
 void Foam::coagulationCloud::readInception(const dictionary& dict)
 {
+    caseChecks::keywords(dict, {"rate", "mass", "cellZone"});
     inception_.rate = getNonNegative(dict, "rate");
     inception_.type.mass = getPositive(dict, "mass");
     inception_.weight = particleWeight_;
@@ -110,9 +115,19 @@ void Foam::coagulationCloud::readInception(const dictionary& dict)
 
 void Foam::coagulationCloud::readInflow(const dictionary& dict)
 {
+    caseChecks::keywords(dict, {"patches", "density", "mass"});
     const wordList patchNames(dict.get<wordList>("patches"));
     inflowDensity_ = getNonNegative(dict, "density");
     inflowMass_ = getPositive(dict, "mass");
+
+    if (inflowDensity_ > 0 && patchNames.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'patches' in " << dict.name() << " lists no patch, but"
+            << " 'density' = " << inflowDensity_ << " asks for inflow." << nl
+            << "    Name the inlet patches, or set density 0 for no inflow"
+            << nl << exit(FatalIOError);
+    }
 
     inflowPatches_.setSize(patchNames.size());
     forAll(patchNames, i)
@@ -315,6 +330,19 @@ void Foam::coagulationCloud::moveOnThreads
               : droppedByTracking;
             listCells_[k] = p.cell();
         }
+
+        // Counts only: the same whatever the order the threads add them in
+        #pragma omp critical(coagulationCloudMoveCounts)
+        {
+            for (label i = 0; i < threadTd.nStalled(); ++i)
+            {
+                td.bookStalled();
+            }
+            if (threadTd.nUnhandled())
+            {
+                td.bookUnhandled(threadTd.unhandledPatch());
+            }
+        }
     }
 
     for (label k = 0; k < nParticles; ++k)
@@ -490,6 +518,9 @@ Foam::coagulationCloud::coagulationCloud
     moments_(4),
     removedInCells_(0),
     events_(),
+    stalled_(0),
+    memoryLimit_(0),
+    pendingWrite_(),
     nThreads_(1),
     cellTets_(mesh.nCells()),
     cellTetVolumes_(mesh.nCells()),
@@ -508,14 +539,26 @@ Foam::coagulationCloud::coagulationCloud
     outcomes_(),
     rng_(0)
 {
+    // Every entry is checked: an unknown keyword is a typo, not a default
+    caseChecks::keywords
+    (
+        properties_,
+        {
+            "algorithm", "kernel", "inception", "inflow", "statisticalWeight",
+            "seed", "sampling", "numberControl"
+        }
+    );
+
     // Statistical scaling of the paper: W = Vref/(n V1).  V1 may be given
     // per algorithm (the paper uses different V1 for DSA and SWA), so that
     // the 'algorithm' keyword alone switches a case between them.
     {
         const dictionary& dict = properties_.subDict("statisticalWeight");
+        caseChecks::keywords(dict, {"n", "V1"});
         n_ = getPositive(dict, "n");
         if (dict.isDict("V1"))
         {
+            caseChecks::keywords(dict.subDict("V1"), {"SWA", "DSA1", "DSA2"});
             V1_ = getPositive
             (
                 dict.subDict("V1"), properties_.get<word>("algorithm")
@@ -552,8 +595,18 @@ Foam::coagulationCloud::coagulationCloud
     if (properties_.found("numberControl"))
     {
         const dictionary& dict = properties_.subDict("numberControl");
-        control.maxParticles =
-            std::size_t(dict.getOrDefault<label>("maxParticlesPerCell", 0));
+        caseChecks::keywords(dict, {"maxParticlesPerCell"});
+        const label maxParticles =
+            dict.getOrDefault<label>("maxParticlesPerCell", 0);
+        if (maxParticles < 0 || maxParticles == 1)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'maxParticlesPerCell' = " << maxParticles << " in "
+                << dict.name() << " must be 0 (off) or at least 2: halving"
+                << " keeps about half of the particles of a cell" << nl
+                << exit(FatalIOError);
+        }
+        control.maxParticles = std::size_t(maxParticles);
     }
 
     algorithm_ =
@@ -608,8 +661,11 @@ Foam::coagulationCloud::coagulationCloud
         }
     }
 
-    // Particles of the start time, if any
+    // Particles of the start time, if any: of a completely written time of
+    // this mesh, each in a cell with a finite positive mass and weight
+    checkStartTime();
     coagulationParticle::readFields(*this);
+    checkParticles();
 
     for (label k = 0; k < 4; ++k)
     {
@@ -635,6 +691,10 @@ Foam::coagulationCloud::coagulationCloud
 
     initial_ = domainContent();
     updateMoments();
+
+    // The cloud may grow into the memory free now, less a quarter for the
+    // rest of the run (fields, samples, the cell step's work arrays)
+    memoryLimit_ = 0.75*availableMemory() + initial_.particles*bytesPerParticle();
 
     Info<< "Coagulation cloud " << cloudName << ": "
         << initial_.particles << " particles, weight per new particle "
@@ -686,10 +746,26 @@ void Foam::coagulationCloud::coagulateCell
     // the other threads are stepping share its cache lines
     worker.events = coag::StepStatistics();
     worker.rng.engine().seed(streamSeed(celli, 0));
-    (incepts ? worker.algorithm : worker.algorithmNoInception)->advance
-    (
-        population, dt, worker.rng, worker.events
-    );
+    {
+        // The core reports overflow (gelation, a huge kernel) as a
+        // non-finite rate: OpenFOAM's floating-point traps are held while it
+        // runs, so that it can say so instead of dying of SIGFPE
+        std::fenv_t trapping;
+        std::feholdexcept(&trapping);
+        try
+        {
+            (incepts ? worker.algorithm : worker.algorithmNoInception)
+                ->advance(population, dt, worker.rng, worker.events);
+        }
+        catch (...)
+        {
+            std::feclearexcept(FE_ALL_EXCEPT);
+            std::fesetenv(&trapping);
+            throw;
+        }
+        std::feclearexcept(FE_ALL_EXCEPT);
+        std::fesetenv(&trapping);
+    }
     outcome.events = worker.events;
 
     // Write the cell's new state back: survivors in place, new particles
@@ -760,7 +836,11 @@ void Foam::coagulationCloud::coagulate(const scalar dt)
     if (!failure.empty())
     {
         FatalErrorInFunction
-            << "Cell step failed in " << failure << nl << exit(FatalError);
+            << "Cell step failed in " << failure << nl
+            << "    Check the kernel (K0), the inception rate and deltaT in "
+            << properties_.objectPath() << " and "
+            << mesh_.time().controlDict().name() << nl
+            << exit(FatalError);
     }
 
     // Serially, in cell order: book the events, construct the new particles
@@ -809,6 +889,8 @@ void Foam::coagulationCloud::coagulate(const scalar dt)
         }
     }
     sorted_ = false;
+
+    checkMemory();
 }
 
 
@@ -835,6 +917,23 @@ void Foam::coagulationCloud::advect(const volVectorField& U, const scalar dt)
         listValid_ = false;
         Cloud<coagulationParticle>::move(*this, td, dt);
     }
+
+    // A particle that reached a patch type it does not handle was stopped
+    // (and is gone from the cloud): stop the run with the patch's name
+    if (returnReduce(td.nUnhandled(), sumOp<label>()) > 0)
+    {
+        const label patchi = td.unhandledPatch();
+        FatalErrorInFunction
+            << "Particles reached patch '"
+            << (patchi >= 0 ? mesh_.boundaryMesh()[patchi].name() : word("?"))
+            << "' of type '"
+            << (patchi >= 0 ? mesh_.boundaryMesh()[patchi].type() : word("?"))
+            << "' in " << mesh_.boundaryMesh().objectPath() << nl
+            << "    coagulationFoam handles patch (outflow), wall, symmetry,"
+            << " symmetryPlane and empty (rebound), processor, cyclic,"
+            << " cyclicAMI and wedge patches" << nl << exit(FatalError);
+    }
+    stalled_ += td.nStalled();
 
     for (label patchi = 0; patchi < nPatches; ++patchi)
     {
@@ -896,8 +995,11 @@ Foam::scalar Foam::coagulationCloud::massBalanceError() const
     reduce(incepted.mass, sumOp<scalar>());
     reduce(outflow.mass, sumOp<scalar>());
 
+    const scalar control = returnReduce(events_.controlMass, sumOp<scalar>());
+
     const balance now = domainContent();
-    const scalar expected = in.mass + inflow.mass + incepted.mass - outflow.mass;
+    const scalar expected =
+        in.mass + inflow.mass + incepted.mass - outflow.mass + control;
     const scalar scale =
         max(max(now.mass, in.mass + inflow.mass + incepted.mass), VSMALL);
 
@@ -916,7 +1018,7 @@ Foam::label Foam::coagulationCloud::particleBalanceError() const
 }
 
 
-void Foam::coagulationCloud::report() const
+void Foam::coagulationCloud::report()
 {
     balance inflow(inflow_), incepted(this->incepted()), outflow(outflow_);
     reduce(inflow.mass, sumOp<scalar>());
@@ -930,6 +1032,8 @@ void Foam::coagulationCloud::report() const
     scalar fictitious = events_.fictitious;
     reduce(coagulations, sumOp<scalar>());
     reduce(fictitious, sumOp<scalar>());
+    const scalar control = returnReduce(events_.controlMass, sumOp<scalar>());
+    const label stalled = returnReduce(stalled_, sumOp<label>());
 
     const balance now = domainContent();
 
@@ -940,13 +1044,36 @@ void Foam::coagulationCloud::report() const
         << " (fictitious " << fictitious << ")" << nl
         << "    particles in/incepted/out  = " << inflow.particles << " / "
         << incepted.particles << " / " << outflow.particles << nl
-        << "    mass initial + inflow + inception - outflow = "
+        << "    mass initial + inflow + inception - outflow + control = "
         << initial_.mass << " + " << inflow.mass << " + " << incepted.mass
-        << " - " << outflow.mass << nl
+        << " - " << outflow.mass << " + " << control << nl
         << "    mass in domain             = " << now.mass << nl
         << "    mass balance error (rel.)  = " << massBalanceError() << nl
         << "    particle balance error     = " << particleBalanceError()
-        << endl;
+        << nl
+        << "    particles held at a face   = " << stalled << endl;
+
+    checkBalance();
+
+    pendingWrite_ = mesh_.time().timeName();
+}
+
+
+void Foam::coagulationCloud::checkBalance() const
+{
+    // No run ends well having lost particles or mass: the balances close to
+    // round-off, or the run stops here
+    const scalar massError = massBalanceError();
+    const label particleError = particleBalanceError();
+    if (!(mag(massError) <= 1e-9) || particleError != 0)
+    {
+        FatalErrorInFunction
+            << "The balances do not close at time "
+            << mesh_.time().timeName() << ": relative mass error "
+            << massError << ", particle count error " << particleError << nl
+            << "    Particles or mass were lost: please report this case"
+            << nl << exit(FatalError);
+    }
 }
 
 

@@ -4,6 +4,15 @@
 
 #include "coagulationParticle.H"
 #include "coagulationCloud.H"
+#include "meshTools.H"
+#include "emptyPolyPatch.H"
+#include "symmetryPolyPatch.H"
+#include "symmetryPlanePolyPatch.H"
+#include "wallPolyPatch.H"
+#include "processorPolyPatch.H"
+#include "cyclicPolyPatch.H"
+#include "wedgePolyPatch.H"
+#include "cyclicAMIPolyPatch.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -25,14 +34,33 @@ bool Foam::coagulationParticle::move
 {
     td.switchProcessor = false;
     td.keepParticle = true;
-    td.resetWall();
+    td.resetReflection();
+
+    const Vector<label>& solutionD = mesh().solutionD();
+    label stalled = 0;
 
     while (td.keepParticle && !td.switchProcessor && stepFraction() < 1)
     {
         // The carrier velocity is constant within a cell: track to the
-        // next face (or the end of the step) in one straight segment
+        // next face (or the end of the step) in one straight segment, within
+        // the solved directions of a 1-D/2-D mesh
         const scalar f = 1 - stepFraction();
-        trackToAndHitFace(f*trackTime*td.velocity(cell()), f, cloud, td);
+        vector displacement = f*trackTime*td.velocity(cell());
+        meshTools::constrainDirection(mesh(), solutionD, displacement);
+
+        trackToAndHitFace(displacement, f, cloud, td);
+
+        // A particle wedged between faces (a corner hit again and again)
+        // must not stop the run: hold it for the rest of the step
+        if (stepFraction() > 1 - f)
+        {
+            stalled = 0;
+        }
+        else if (++stalled >= maxStalledHits)
+        {
+            td.bookStalled();
+            stepFraction() = 1;
+        }
     }
 
     return td.keepParticle;
@@ -55,7 +83,37 @@ bool Foam::coagulationParticle::hitPatch
         return true;
     }
 
-    return false;
+    // Rebound: mirror the rest of the move in the face (an empty patch is
+    // reached only by round-off, the displacement being constrained)
+    if
+    (
+        isA<wallPolyPatch>(pp)
+     || isA<symmetryPlanePolyPatch>(pp)
+     || isA<symmetryPolyPatch>(pp)
+     || isA<emptyPolyPatch>(pp)
+    )
+    {
+        td.reflect(normal());
+        return true;
+    }
+
+    // OpenFOAM's own handling: processor, cyclic, wedge
+    if
+    (
+        isA<processorPolyPatch>(pp)
+     || isA<cyclicPolyPatch>(pp)
+     || isA<cyclicAMIPolyPatch>(pp)
+     || isA<wedgePolyPatch>(pp)
+    )
+    {
+        return false;
+    }
+
+    // Anything else (mapped, cyclicACMI, ...): stop the particle here and
+    // let the cloud stop the run with the patch's name
+    td.bookUnhandled(patch());
+    td.keepParticle = false;
+    return true;
 }
 
 
@@ -66,16 +124,6 @@ void Foam::coagulationParticle::hitProcessorPatch
 )
 {
     td.switchProcessor = true;
-}
-
-
-void Foam::coagulationParticle::hitWallPatch
-(
-    coagulationCloud&,
-    trackingData& td
-)
-{
-    td.hitWall(normal());
 }
 
 

@@ -5,6 +5,7 @@
 #include "coagulationSampler.H"
 #include "fvMesh.H"
 #include "OSspecific.H"
+#include "caseChecks.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -14,12 +15,15 @@ Foam::coagulationSampler::coagulationSampler(const coagulationCloud& cloud)
     tRelax_(0),
     stepsPerSample_(1),
     writer_(),
+    file_(),
+    lastFlushed_(-GREAT),
     values_()
 {
     const dictionary& dict = cloud.properties().subDict("sampling");
     const Time& runTime = cloud.pMesh().time();
     const fvMesh& mesh = dynamic_cast<const fvMesh&>(cloud.pMesh());
 
+    caseChecks::keywords(dict, {"tRelax", "sampleInterval"});
     tRelax_ = dict.get<scalar>("tRelax");
     const scalar interval = dict.get<scalar>("sampleInterval");
     const scalar dt = runTime.deltaTValue();
@@ -38,6 +42,31 @@ Foam::coagulationSampler::coagulationSampler(const coagulationCloud& cloud)
             << exit(FatalIOError);
     }
 
+    // A run that would take no sample is a mistake in the input: the first
+    // sample is at the first step index past the start that is a multiple
+    // of the interval
+    {
+        const label startIndex = runTime.startTimeIndex();
+        const label nSteps = label
+        (
+            std::round((runTime.endTime().value() - runTime.value())/dt)
+        );
+        const label firstSample =
+            (startIndex/stepsPerSample_ + 1)*stepsPerSample_;
+        if (nSteps > 0 && firstSample > startIndex + nSteps)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'sampleInterval' = " << interval << " in "
+                << dict.name() << " is longer than the run (" << nSteps
+                << " steps of " << dt << " from time " << runTime.timeName()
+                << " to endTime " << runTime.endTime().value() << "):"
+                << " no sample would be written." << nl
+                << "    Set sampleInterval <= "
+                << nSteps*dt
+                << " or a later endTime" << nl << exit(FatalIOError);
+        }
+    }
+
     const fileName dir
     (
         runTime.globalPath()/"postProcessing"/"coagulationSamples"
@@ -51,6 +80,7 @@ Foam::coagulationSampler::coagulationSampler(const coagulationCloud& cloud)
         file += "_processor" + Foam::name(Pstream::myProcNo());
     }
     file = dir/(file + ".h5");
+    file_ = file;
 
     const vectorField& C = mesh.C().primitiveField();
     std::vector<std::array<double, 3>> centres(C.size());
@@ -59,8 +89,34 @@ Foam::coagulationSampler::coagulationSampler(const coagulationCloud& cloud)
         centres[celli] = {C[celli].x(), C[celli].y(), C[celli].z()};
     }
 
-    writer_.reset(new coag::MomentSeriesWriter(file, centres, 4));
+    try
+    {
+        writer_.reset(new coag::MomentSeriesWriter(file, centres, 4));
+        setAttributes(cloud, dt, interval);
+    }
+    catch (const std::exception& e)
+    {
+        FatalErrorInFunction
+            << "Cannot create the sample file " << file << ": " << e.what()
+            << nl << exit(FatalError);
+    }
 
+    values_.resize(4*C.size());
+
+    Info<< "Sampling moments every " << stepsPerSample_ << " steps into "
+        << dir << nl << endl;
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::coagulationSampler::setAttributes
+(
+    const coagulationCloud& cloud,
+    const scalar dt,
+    const scalar interval
+)
+{
     writer_->setAttribute("n", cloud.n());
     writer_->setAttribute("V1", cloud.V1());
     writer_->setAttribute("K0", cloud.kernel().K0());
@@ -78,11 +134,6 @@ Foam::coagulationSampler::coagulationSampler(const coagulationCloud& cloud)
     (
         "kernel", cloud.properties().subDict("kernel").get<word>("type")
     );
-
-    values_.resize(4*C.size());
-
-    Info<< "Sampling moments every " << stepsPerSample_ << " steps into "
-        << dir << nl << endl;
 }
 
 
@@ -109,7 +160,27 @@ void Foam::coagulationSampler::sample()
 
     if (runTime.writeTime())
     {
+        flush();
+    }
+}
+
+
+void Foam::coagulationSampler::flush()
+{
+    try
+    {
         writer_->flush();
+        lastFlushed_ = cloud_.pMesh().time().value();
+    }
+    catch (const std::exception& e)
+    {
+        FatalErrorInFunction
+            << "Cannot write the samples to " << file_ << " (disk full?): "
+            << e.what() << nl << "    The file is intact and holds the"
+            << " samples up to the last write"
+            << (lastFlushed_ > -GREAT ? " (time " + Foam::name(lastFlushed_) + ")" : word(""))
+            << "; restart from the latest complete time" << nl
+            << exit(FatalError);
     }
 }
 

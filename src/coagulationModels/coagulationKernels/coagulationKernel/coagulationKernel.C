@@ -4,6 +4,7 @@
 
 #include "coagulationKernel.H"
 #include "error.H"
+#include "caseChecks.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -25,11 +26,11 @@ Foam::coagulationKernel::coagulationKernel
     K0_(dict.get<scalar>("K0")),
     core_()
 {
-    if (!(K0_ > 0))
+    if (!(K0_ > 0) || !std::isfinite(K0_))
     {
         FatalIOErrorInFunction(dict)
             << "Kernel coefficient K0 = " << K0_ << " in " << dict.name()
-            << " must be positive" << nl
+            << " must be positive and finite" << nl
             << exit(FatalIOError);
     }
 
@@ -44,6 +45,7 @@ Foam::autoPtr<Foam::coagulationKernel> Foam::coagulationKernel::New
     const dictionary& dict
 )
 {
+    caseChecks::keywords(dict, {"type", "K0"});
     const word kernelType(dict.get<word>("type"));
 
     Info<< "Selecting coagulation kernel " << kernelType << endl;
