@@ -30,10 +30,15 @@ grep -q '"threadsPerRank": 1,' "$out/ensemble.json" || fail "threadsPerRank in e
 cp "$out/realisation_1/0.6/M1" "$workDir/M1.uninterrupted"
 cp "$out/results/moments.csv" "$workDir/moments.uninterrupted.csv"
 kept=$(cat "$out/realisation_0/runSeconds")
-rm -rf "$out/realisation_1/0.6" "$out/realisation_1/runSeconds" "$out/ensemble.json"
+# what a kill during the write of 0.6 leaves: a short particle field, no completion marker
+rm -f "$out/realisation_1/0.6/uniform/coagulationCloudComplete" "$out/realisation_1/runSeconds" \
+    "$out/ensemble.json"
+: > "$out/realisation_1/0.6/lagrangian/coagulationCloud/mass"
 coagulationEnsemble -resume -out "$out" -- --no-plots > "$workDir/log.resume" 2>&1 \
     || { tail -20 "$workDir/log.resume"; fail "resume failed"; }
 grep -q "kept: $out/realisation_0 (finished before)" "$workDir/log.resume" || fail "finished realisation not kept"
+grep -q "set aside: $out/realisation_1/0.6 (incomplete" "$workDir/log.resume" \
+    || { cat "$workDir/log.resume"; fail "the half-written 0.6 was not set aside"; }
 grep -q "resumed: $out/realisation_1 from time 0.3" "$workDir/log.resume" || fail "did not resume from 0.3"
 grep -q "Create mesh for time = 0.3" "$out/realisation_1/log.coagulationFoam" || fail "solver did not restart at 0.3"
 [ -f "$out/realisation_1/log.coagulationFoam.segment1" ] || fail "interrupted segment's log not kept"
@@ -61,4 +66,14 @@ coagulationEnsemble -resume -out "$out" -set system/controlDict:endTime=1 > "$wo
 grep -q "drop -case, -seed0, -np and -set" "$workDir/log.bad2" || fail "message for -resume with -set"
 coagulationEnsemble -resume -out "$out" -realisations 1 > "$workDir/log.bad3" 2>&1 && fail "-resume shrinking"
 grep -q "fewer than the 3 realisations" "$workDir/log.bad3" || fail "message for shrinking"
-echo "PASS ensemble: 2 realisations pooled; resumed from 0.3 to identical statistics; extended to 3"
+# options without a value, and a number of realisations that would fill the disk
+rc=0
+coagulationEnsemble -case "$COAGULATIONFOAM_DIR/tutorials/constantKernelDuct" -realisations \
+    > "$workDir/log.bad4" 2>&1 || rc=$?
+[ "$rc" -eq 2 ] && grep -q -- "-realisations needs a value" "$workDir/log.bad4" \
+    || { cat "$workDir/log.bad4"; fail "-realisations without a value: rc $rc"; }
+coagulationEnsemble -case "$COAGULATIONFOAM_DIR/tutorials/constantKernelDuct" -realisations 1000000000000 \
+    -out "$workDir/huge" > "$workDir/log.bad5" 2>&1 && fail "a huge -realisations was taken"
+grep -q "at most 10000" "$workDir/log.bad5" || { cat "$workDir/log.bad5"; fail "message for a huge R"; }
+[ ! -d "$workDir/huge" ] || [ -z "$(ls "$workDir/huge")" ] || fail "a huge R made folders"
+echo "PASS ensemble: 2 realisations pooled; resumed past a half-written 0.6 from 0.3 to identical statistics; extended to 3; bad options refused"
