@@ -701,7 +701,17 @@ Foam::coagulationCloud::coagulationCloud
         << particleWeight_ << ", inception rate " << inception_.rate
         << " in " << returnReduce(std::count(inceptionCell_.begin(), inceptionCell_.end(), true), sumOp<label>())
         << " cells, " << nThreads_ << " thread(s) for the cell step"
-        << nl << endl;
+        << " (OMP_WAIT_POLICY "
+        << (std::getenv("OMP_WAIT_POLICY") ? std::getenv("OMP_WAIT_POLICY") : "unset")
+        << ")" << nl << endl;
+
+    if (nThreads_ > 1 && !std::getenv("OMP_WAIT_POLICY"))
+    {
+        WarningInFunction
+            << "OMP_WAIT_POLICY is not set: threads waiting for each other"
+            << " spin, which slows a run several times on a machine shared"
+            << " with other jobs. etc/bashrc sets it to PASSIVE" << nl << endl;
+    }
 }
 
 
