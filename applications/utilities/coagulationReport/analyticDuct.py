@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 """Reference steady-state mass moments of the 1-D coagulation ducts.
 
 Patterson & Wagner, "A stochastic weighted particle method for coagulation-

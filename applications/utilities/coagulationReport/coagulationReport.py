@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 """coagulationReport: time-averaged moment statistics of coagulationFoam runs.
 
 Reads the HDF5 moment samples written by the solver,

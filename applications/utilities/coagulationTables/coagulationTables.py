@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 """coagulationTables: the tables and variance figures of Patterson & Wagner's
 weighted-particle paper from ensembles of coagulationFoam runs.
 

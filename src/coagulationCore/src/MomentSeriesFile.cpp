@@ -1,3 +1,5 @@
+// coagulationFoam core. Copyright (C) 2025-2026 the coagulationFoam authors
+// SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 #include "coagulation/MomentSeriesFile.hpp"
 
 #include <H5Cpp.h>

@@ -1,5 +1,8 @@
 /*---------------------------------------------------------------------------*\
   coagulationFoam: weighted stochastic particles coupled to OpenFOAM
+  Copyright (C) 2025-2026 the coagulationFoam authors
+  SPDX-License-Identifier: GPL-3.0-or-later (see COPYING); links OpenFOAM,
+  which is GPL-3.0-or-later too
 \*---------------------------------------------------------------------------*/
 
 #include "constantKernel.H"
