@@ -53,6 +53,12 @@ expectFatal typoMaxParticles   "maxParticlesPerCel" -entry numberControl -set "{
 expectFatal typoKernel         "K00"              -entry kernel/K00 -set 1
 expectFatal typoSampling       "tRelx"            -entry sampling/tRelx -set 1
 expectFatal typoV1             "SWB"              -entry statisticalWeight/V1/SWB -set 1
+# Every run-time selectable part: an unknown type or keyword lists the valid ones
+expectFatal unknownTransport   "frozenFlow"       -entry transport -set "{ type brownian; }"
+expectFatal typoTransport      "tpye"             -entry transport -set "{ tpye frozenFlow; }"
+expectFatal unknownInception   "cellZone"         -entry inception/type -set pointSource
+expectFatal uniformWithZone    "type uniform"     -entry inception -set "{ type uniform; rate 1; mass 1; cellZone flame; }"
+expectFatal unknownInjection   "patchInflow"      -entry inflow/type -set nozzle
 # Values that used to be taken without a word
 expectFatal negativeMaxParticles "maxParticlesPerCell" -entry numberControl -set "{ maxParticlesPerCell -1; }"
 expectFatal oneMaxParticles    "maxParticlesPerCell" -entry numberControl -set "{ maxParticlesPerCell 1; }"

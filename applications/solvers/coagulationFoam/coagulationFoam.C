@@ -29,7 +29,6 @@ Description
 
 #include "fvCFD.H"
 #include "coagulationCloud.H"
-#include "coagulationSampler.H"
 #include "splitStepTimer.H"
 #include "caseChecks.H"
 
@@ -57,35 +56,36 @@ int main(int argc, char *argv[])
         cloud.completeWrite();
 
         ++runTime;
-        const scalar splitTimeStep = runTime.deltaTValue();
+        const scalar dt = runTime.deltaTValue();
 
         Info<< "Time = " << runTime.timeName()
             << "  particles = " << returnReduce(cloud.size(), sumOp<label>())
             << nl;
 
-        // 1. Source terms: inception + coagulation, each cell on its own
+        // Operator splitting over dt (Patterson & Wagner 2011, §2):
+        // 1. the source terms: inception (eqs 10, 20) and coagulation (SWA
+        //    jumps 19-22, DSA jumps 9-15), each cell on its own
         timer.start();
-        cloud.coagulate(splitTimeStep);
+        cloud.cellStep(dt);
         timer.stopCoagulation();
 
-        // 2. Transport: every particle moves with the flow over the step
-        cloud.advect(U, splitTimeStep);
+        // 2. advection: every particle moves with the frozen flow U over dt
+        //    (outflow leaves, walls rebound), then inflow enters
+        cloud.transport(U, dt);
         timer.stopTransport(cloud.size());
 
-        // Moments M0..M3 of the new state, sampled when due
-        cloud.updateMoments();
-        sampler.sample();
+        // The cloud functions on the new state: M0..M3 (eq. 37), samples
+        cloud.postStep();
 
         if (runTime.write())
         {
-            cloud.report();
+            cloud.onWrite();
             timer.report(cloud.events().coagulations);
         }
     }
 
-    sampler.flush();
-    cloud.completeWrite();
-    cloud.checkBalance();
+    // Samples to disk, the last write marked complete, balances checked
+    cloud.endRun();
 
     Info<< "End\n" << endl;
 

@@ -1,0 +1,51 @@
+/*---------------------------------------------------------------------------*\
+  coagulationFoam: weighted stochastic particles coupled to OpenFOAM
+  Copyright (C) 2025-2026 the coagulationFoam authors
+  SPDX-License-Identifier: GPL-3.0-or-later (see COPYING); links OpenFOAM,
+  which is GPL-3.0-or-later too
+\*---------------------------------------------------------------------------*/
+
+#include "cloudFunction.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(cloudFunction, 0);
+    defineRunTimeSelectionTable(cloudFunction, cloud);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::cloudFunction::cloudFunction(coagulationCloud& cloud)
+:
+    cloud_(cloud)
+{}
+
+
+// * * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
+
+Foam::autoPtr<Foam::cloudFunction> Foam::cloudFunction::New
+(
+    const word& functionType,
+    coagulationCloud& cloud
+)
+{
+    auto cstrIter = cloudConstructorTablePtr_->cfind(functionType);
+
+    if (!cstrIter.found())
+    {
+        FatalErrorInLookup
+        (
+            "cloudFunction",
+            functionType,
+            *cloudConstructorTablePtr_
+        ) << exit(FatalError);
+    }
+
+    return autoPtr<cloudFunction>(cstrIter()(cloud));
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,166 @@
+/*---------------------------------------------------------------------------*\
+  coagulationFoam: weighted stochastic particles coupled to OpenFOAM
+  Copyright (C) 2025-2026 the coagulationFoam authors
+  SPDX-License-Identifier: GPL-3.0-or-later (see COPYING); links OpenFOAM,
+  which is GPL-3.0-or-later too
+\*---------------------------------------------------------------------------*/
+
+#include "massBalance.H"
+#include "coagulationCloud.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace cloudFunctions
+{
+    defineTypeNameAndDebug(massBalance, 0);
+    addToRunTimeSelectionTable(cloudFunction, massBalance, cloud);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::cloudFunctions::massBalance::massBalance(coagulationCloud& cloud)
+:
+    cloudFunction(cloud),
+    initial_(),
+    inflow_(),
+    outflow_(),
+    stalled_(0)
+{
+    initial_ = domain();
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::particleBalance Foam::cloudFunctions::massBalance::incepted() const
+{
+    const coag::StepStatistics& events = cloud_.events();
+    const scalar W = cloud_.scaling().particleWeight();
+    particleBalance b;
+    b.particles = label(events.inceptions);
+    b.number = events.inceptions*W;
+    b.mass = events.inceptions*W*cloud_.inception().core().type.mass;
+    return b;
+}
+
+
+Foam::particleBalance Foam::cloudFunctions::massBalance::domain() const
+{
+    particleBalance b;
+    for (const coagulationParticle& p : cloud_)
+    {
+        b.add(p.weight(), p.mass());
+    }
+    reduce(b.particles, sumOp<label>());
+    reduce(b.number, sumOp<scalar>());
+    reduce(b.mass, sumOp<scalar>());
+    return b;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::cloudFunctions::massBalance::postMove
+(
+    const transportModel::outflow& out
+)
+{
+    forAll(out.particles, patchi)
+    {
+        outflow_.particles += out.particles[patchi];
+        outflow_.number += out.number[patchi];
+        outflow_.mass += out.mass[patchi];
+    }
+    stalled_ += out.stalled;
+}
+
+
+Foam::scalar Foam::cloudFunctions::massBalance::massError() const
+{
+    const scalar inflow = returnReduce(inflow_.mass, sumOp<scalar>());
+    const scalar incepted = returnReduce(this->incepted().mass, sumOp<scalar>());
+    const scalar outflow = returnReduce(outflow_.mass, sumOp<scalar>());
+    const scalar control =
+        returnReduce(cloud_.events().controlMass, sumOp<scalar>());
+
+    const particleBalance now = domain();
+    const scalar expected =
+        initial_.mass + inflow + incepted - outflow + control;
+    const scalar scale =
+        max(max(now.mass, initial_.mass + inflow + incepted), VSMALL);
+
+    return (now.mass - expected)/scale;
+}
+
+
+Foam::label Foam::cloudFunctions::massBalance::particleError() const
+{
+    label change =
+        inflow_.particles + incepted().particles - outflow_.particles
+      - cloud_.removedInCells();
+    reduce(change, sumOp<label>());
+
+    return domain().particles - initial_.particles - change;
+}
+
+
+void Foam::cloudFunctions::massBalance::check() const
+{
+    const scalar mError = massError();
+    const label pError = particleError();
+    if (!(mag(mError) <= 1e-9) || pError != 0)
+    {
+        FatalErrorInFunction
+            << "The balances do not close at time "
+            << cloud_.mesh().time().timeName() << ": relative mass error "
+            << mError << ", particle count error " << pError << nl
+            << "    Particles or mass were lost: please report this case"
+            << nl << exit(FatalError);
+    }
+}
+
+
+void Foam::cloudFunctions::massBalance::write()
+{
+    particleBalance inflow(inflow_), incepted(this->incepted());
+    particleBalance outflow(outflow_);
+    reduce(inflow.mass, sumOp<scalar>());
+    reduce(incepted.mass, sumOp<scalar>());
+    reduce(outflow.mass, sumOp<scalar>());
+    reduce(inflow.particles, sumOp<label>());
+    reduce(incepted.particles, sumOp<label>());
+    reduce(outflow.particles, sumOp<label>());
+
+    const coag::StepStatistics& events = cloud_.events();
+    const scalar coagulations =
+        returnReduce(scalar(events.coagulations), sumOp<scalar>());
+    const scalar fictitious =
+        returnReduce(scalar(events.fictitious), sumOp<scalar>());
+    const scalar control = returnReduce(events.controlMass, sumOp<scalar>());
+    const label stalled = returnReduce(stalled_, sumOp<label>());
+
+    const particleBalance now = domain();
+
+    Info<< "Coagulation cloud:" << nl
+        << "    particles in domain        = " << now.particles << nl
+        << "    physical particles         = " << now.number << nl
+        << "    coagulation events         = " << coagulations
+        << " (fictitious " << fictitious << ")" << nl
+        << "    particles in/incepted/out  = " << inflow.particles << " / "
+        << incepted.particles << " / " << outflow.particles << nl
+        << "    mass initial + inflow + inception - outflow + control = "
+        << initial_.mass << " + " << inflow.mass << " + " << incepted.mass
+        << " - " << outflow.mass << " + " << control << nl
+        << "    mass in domain             = " << now.mass << nl
+        << "    mass balance error (rel.)  = " << massError() << nl
+        << "    particle balance error     = " << particleError() << nl
+        << "    particles held at a face   = " << stalled << endl;
+
+    check();
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,203 @@
+/*---------------------------------------------------------------------------*\
+  coagulationFoam: weighted stochastic particles coupled to OpenFOAM
+  Copyright (C) 2025-2026 the coagulationFoam authors
+  SPDX-License-Identifier: GPL-3.0-or-later (see COPYING); links OpenFOAM,
+  which is GPL-3.0-or-later too
+\*---------------------------------------------------------------------------*/
+
+#include "momentSampler.H"
+#include "coagulationCloud.H"
+#include "addToRunTimeSelectionTable.H"
+#include "fvMesh.H"
+#include "OSspecific.H"
+#include "caseChecks.H"
+
+namespace Foam
+{
+namespace cloudFunctions
+{
+    defineTypeNameAndDebug(momentSampler, 0);
+    addToRunTimeSelectionTable(cloudFunction, momentSampler, cloud);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::cloudFunctions::momentSampler::momentSampler(coagulationCloud& cloud)
+:
+    cloudFunction(cloud),
+    tRelax_(0),
+    stepsPerSample_(1),
+    writer_(),
+    file_(),
+    lastFlushed_(-GREAT),
+    values_()
+{
+    const dictionary& dict = cloud.properties().subDict("sampling");
+    const Time& runTime = cloud.pMesh().time();
+    const fvMesh& mesh = cloud.mesh();
+
+    caseChecks::keywords(dict, {"tRelax", "sampleInterval"});
+    tRelax_ = dict.get<scalar>("tRelax");
+    const scalar interval = dict.get<scalar>("sampleInterval");
+    const scalar dt = runTime.deltaTValue();
+    stepsPerSample_ = label(std::round(interval/dt));
+
+    if
+    (
+        tRelax_ < 0 || stepsPerSample_ < 1
+     || mag(stepsPerSample_*dt - interval) > 1e-6*interval
+    )
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'sampleInterval' = " << interval << " in " << dict.name()
+            << " must be a positive multiple of deltaT = " << dt
+            << ", and 'tRelax' = " << tRelax_ << " must not be negative" << nl
+            << exit(FatalIOError);
+    }
+
+    // A run that would take no sample is a mistake in the input: the first
+    // sample is at the first step index past the start that is a multiple
+    // of the interval
+    {
+        const label startIndex = runTime.startTimeIndex();
+        const label nSteps = label
+        (
+            std::round((runTime.endTime().value() - runTime.value())/dt)
+        );
+        const label firstSample =
+            (startIndex/stepsPerSample_ + 1)*stepsPerSample_;
+        if (nSteps > 0 && firstSample > startIndex + nSteps)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'sampleInterval' = " << interval << " in "
+                << dict.name() << " is longer than the run (" << nSteps
+                << " steps of " << dt << " from time " << runTime.timeName()
+                << " to endTime " << runTime.endTime().value() << "):"
+                << " no sample would be written." << nl
+                << "    Set sampleInterval <= "
+                << nSteps*dt
+                << " or a later endTime" << nl << exit(FatalIOError);
+        }
+    }
+
+    const fileName dir
+    (
+        runTime.globalPath()/"postProcessing"/"coagulationSamples"
+    );
+    // Every processor writes its own file: each makes sure the folder exists
+    mkDir(dir);
+
+    fileName file("samples_" + runTime.timeName());
+    if (Pstream::parRun())
+    {
+        file += "_processor" + Foam::name(Pstream::myProcNo());
+    }
+    file = dir/(file + ".h5");
+    file_ = file;
+
+    const vectorField& C = mesh.C().primitiveField();
+    std::vector<std::array<double, 3>> centres(C.size());
+    forAll(C, celli)
+    {
+        centres[celli] = {C[celli].x(), C[celli].y(), C[celli].z()};
+    }
+
+    try
+    {
+        writer_.reset(new coag::MomentSeriesWriter(file, centres, 4));
+        setAttributes(dt, interval);
+    }
+    catch (const std::exception& e)
+    {
+        FatalErrorInFunction
+            << "Cannot create the sample file " << file << ": " << e.what()
+            << nl << exit(FatalError);
+    }
+
+    values_.resize(4*C.size());
+
+    Info<< "Sampling moments every " << stepsPerSample_ << " steps into "
+        << dir << nl << endl;
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::cloudFunctions::momentSampler::setAttributes
+(
+    const scalar dt,
+    const scalar interval
+)
+{
+    const coagulationCloud& cloud = cloud_;
+    writer_->setAttribute("n", cloud.scaling().n());
+    writer_->setAttribute("V1", cloud.scaling().V1());
+    writer_->setAttribute("K0", cloud.kernel().K0());
+    writer_->setAttribute("inceptionRate", cloud.inception().core().rate);
+    writer_->setAttribute("seed", double(cloud.seeds().seed()));
+    writer_->setAttribute("splitDeltaT", dt);
+    writer_->setAttribute("sampleInterval", interval);
+    writer_->setAttribute("tRelax", tRelax_);
+    writer_->setAttribute("particleWeight", cloud.scaling().particleWeight());
+    writer_->setAttribute
+    (
+        "algorithm", cloud.algorithmName()
+    );
+    writer_->setAttribute
+    (
+        "kernel", cloud.properties().subDict("kernel").get<word>("type")
+    );
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::cloudFunctions::momentSampler::sample()
+{
+    const Time& runTime = cloud_.pMesh().time();
+    if (runTime.timeIndex() % stepsPerSample_ != 0)
+    {
+        return;
+    }
+
+    const PtrList<volScalarField>& M = cloud_.moments();
+    const label nCells = M[0].size();
+    for (label celli = 0; celli < nCells; ++celli)
+    {
+        for (label k = 0; k < 4; ++k)
+        {
+            values_[4*celli + k] = M[k][celli];
+        }
+    }
+    writer_->append(runTime.value(), values_);
+
+    if (runTime.writeTime())
+    {
+        flush();
+    }
+}
+
+
+void Foam::cloudFunctions::momentSampler::flush()
+{
+    try
+    {
+        writer_->flush();
+        lastFlushed_ = cloud_.pMesh().time().value();
+    }
+    catch (const std::exception& e)
+    {
+        FatalErrorInFunction
+            << "Cannot write the samples to " << file_ << " (disk full?): "
+            << e.what() << nl << "    The file is intact and holds the"
+            << " samples up to the last write"
+            << (lastFlushed_ > -GREAT ? " (time " + Foam::name(lastFlushed_) + ")" : word(""))
+            << "; restart from the latest complete time" << nl
+            << exit(FatalError);
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,212 @@
+/*---------------------------------------------------------------------------*\
+  coagulationFoam: weighted stochastic particles coupled to OpenFOAM
+  Copyright (C) 2025-2026 the coagulationFoam authors
+  SPDX-License-Identifier: GPL-3.0-or-later (see COPYING); links OpenFOAM,
+  which is GPL-3.0-or-later too
+\*---------------------------------------------------------------------------*/
+
+#include "caseChecks.H"
+#include "fvMesh.H"
+#include "fvc.H"
+#include "emptyPolyPatch.H"
+#include "surfaceFields.H"
+
+// * * * * * * * * * * * * * * * * Functions * * * * * * * * * * * * * * * //
+
+void Foam::caseChecks::keywords
+(
+    const dictionary& dict,
+    const wordList& valid
+)
+{
+    for (const entry& e : dict)
+    {
+        if (!valid.found(e.keyword()))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Unknown entry '" << e.keyword() << "' in "
+                << dict.name() << nl
+                << "    Valid entries are " << valid << nl
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+Foam::scalar Foam::caseChecks::positive
+(
+    const dictionary& dict,
+    const word& key
+)
+{
+    const scalar value = dict.get<scalar>(key);
+    if (!(value > 0) || !std::isfinite(value))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' = " << value << " in " << dict.name()
+            << " must be positive and finite" << nl << exit(FatalIOError);
+    }
+    return value;
+}
+
+
+Foam::scalar Foam::caseChecks::nonNegative
+(
+    const dictionary& dict,
+    const word& key
+)
+{
+    const scalar value = dict.get<scalar>(key);
+    if (!(value >= 0) || !std::isfinite(value))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' = " << value << " in " << dict.name()
+            << " must be finite and not negative" << nl << exit(FatalIOError);
+    }
+    return value;
+}
+
+
+void Foam::caseChecks::velocity(const volVectorField& U)
+{
+    auto check = [&U](const vectorField& values, const word& where)
+    {
+        forAll(values, i)
+        {
+            const vector& u = values[i];
+            if
+            (
+                !std::isfinite(u.x()) || !std::isfinite(u.y())
+             || !std::isfinite(u.z())
+            )
+            {
+                FatalErrorInFunction
+                    << "Field " << U.objectPath() << " holds " << u
+                    << " in " << where << " (index " << i << "): the carrier"
+                    << " velocity must be finite everywhere" << nl
+                    << exit(FatalError);
+            }
+        }
+    };
+
+    check(U.primitiveField(), "the internalField");
+    forAll(U.boundaryField(), patchi)
+    {
+        check
+        (
+            U.boundaryField()[patchi],
+            "boundaryField " + U.mesh().boundaryMesh()[patchi].name()
+        );
+    }
+}
+
+
+void Foam::caseChecks::emptyPatches(const fvMesh& mesh)
+{
+    // In a 1-D/2-D mesh every cell has two empty faces normal to each empty
+    // direction. An empty patch with any other count is not a reduced-D
+    // direction but a lost boundary (faces that should be an outlet or wall)
+    const polyBoundaryMesh& patches = mesh.boundaryMesh();
+    const vectorField& Sf = mesh.faceAreas();
+
+    Vector<label> nFaces(Zero);
+    wordList names(3);
+    forAll(patches, patchi)
+    {
+        const polyPatch& pp = patches[patchi];
+        if (!isA<emptyPolyPatch>(pp))
+        {
+            continue;
+        }
+        forAll(pp, i)
+        {
+            const vector& s = Sf[pp.start() + i];
+            const direction d =
+                mag(s.x()) >= mag(s.y()) && mag(s.x()) >= mag(s.z()) ? 0
+              : mag(s.y()) >= mag(s.z()) ? 1 : 2;
+            ++nFaces[d];
+            names[d] = pp.name();
+        }
+    }
+    reduce(nFaces, sumOp<Vector<label>>());
+    const label nCells = returnReduce(mesh.nCells(), sumOp<label>());
+
+    for (direction d = 0; d < 3; ++d)
+    {
+        if (nFaces[d] != 0 && nFaces[d] != 2*nCells)
+        {
+            FatalErrorInFunction
+                << "The empty patch '" << names[d] << "' of "
+                << mesh.boundaryMesh().objectPath() << " holds " << nFaces[d]
+                << " faces normal to the " << vector::componentNames[d]
+                << " direction, but a 1-D/2-D mesh of " << nCells
+                << " cells has 2 per cell (" << 2*nCells << ")." << nl
+                << "    Faces that belong to an outlet or a wall have lost"
+                << " their patch (blockMesh puts faces missing from 'boundary'"
+                << " into the empty 'defaultFaces'): particles would vanish"
+                << " through them. Give them a patch of type patch or wall."
+                << nl << exit(FatalError);
+        }
+    }
+}
+
+
+Foam::scalar Foam::caseChecks::maxCourant
+(
+    const volVectorField& U,
+    const scalar deltaT
+)
+{
+    const fvMesh& mesh = U.mesh();
+    const surfaceScalarField phi(fvc::interpolate(U) & mesh.Sf());
+    const scalarField sumPhi
+    (
+        fvc::surfaceSum(mag(phi))().primitiveField()
+    );
+    return 0.5*gMax(sumPhi/mesh.V().field())*deltaT;
+}
+
+
+void Foam::caseChecks::courant(const volVectorField& U)
+{
+    const Time& runTime = U.time();
+    const scalar deltaT = runTime.deltaTValue();
+    const scalar Co = maxCourant(U, deltaT);
+
+    Info<< "Courant number of the split step: max " << Co << nl << endl;
+
+    if (Co > 1 + 1e-9)
+    {
+        FatalIOErrorInFunction(runTime.controlDict())
+            << "Entry 'deltaT' = " << deltaT << " in "
+            << runTime.controlDict().name() << " gives a Courant number of "
+            << Co << " > 1: particles would cross cells whose cell step they"
+            << " never see, and inflow would skip the first cells." << nl
+            << "    Set deltaT <= " << deltaT/Co << nl
+            << exit(FatalIOError);
+    }
+}
+
+
+void Foam::caseChecks::timeControls(const Time& runTime)
+{
+    const scalar deltaT = runTime.deltaTValue();
+    const scalar start = runTime.startTime().value();
+    const scalar end = runTime.endTime().value();
+
+    // Time::run() steps while t < endTime - deltaT/2: a run with
+    // endTime - startTime in (0, deltaT/2] would end at once
+    if (end > start && end - start <= 0.5*deltaT)
+    {
+        FatalIOErrorInFunction(runTime.controlDict())
+            << "Entry 'endTime' = " << end << " in "
+            << runTime.controlDict().name() << " is less than half a step"
+            << " (deltaT = " << deltaT << ") after the start time " << start
+            << ": the run would take no step." << nl
+            << "    Set endTime >= " << start + deltaT << " or a smaller deltaT"
+            << nl << exit(FatalIOError);
+    }
+}
+
+
+// ************************************************************************* //

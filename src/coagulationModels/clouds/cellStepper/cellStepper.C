@@ -1,0 +1,232 @@
+/*---------------------------------------------------------------------------*\
+  coagulationFoam: weighted stochastic particles coupled to OpenFOAM
+  Copyright (C) 2025-2026 the coagulationFoam authors
+  SPDX-License-Identifier: GPL-3.0-or-later (see COPYING); links OpenFOAM,
+  which is GPL-3.0-or-later too
+\*---------------------------------------------------------------------------*/
+
+#include "cellStepper.H"
+#include "coagulationCloud.H"
+
+#include <cfenv>
+#include <string>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::cellStepper::cellStepper
+(
+    coagulationCloud& cloud,
+    const cellAlgorithm& algorithm,
+    const cellAlgorithm& algorithmNoInception
+)
+:
+    cloud_(cloud),
+    tets_(cloud.pMesh()),
+    workers_(cloud.nThreads()),
+    outcomes_(),
+    listRemoved_()
+{
+    for (worker& w : workers_)
+    {
+        w.algorithm = algorithm.clone();
+        w.algorithmNoInception = algorithmNoInception.clone();
+    }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::cellStepper::advanceCell
+(
+    const label celli,
+    const scalar dt,
+    worker& w,
+    cellOutcome& outcome
+) const
+{
+    outcome.events = coag::StepStatistics();
+    outcome.born.clear();
+    outcome.died.clear();
+
+    const cellParticleIndex& index = cloud_.index();
+    const label start = index.cellStart()[celli];
+    const label np = index.cellStart()[celli + 1] - start;
+    const bool incepts =
+        cloud_.inception().core().rate > 0 && cloud_.inception().incepts(celli);
+
+    // Without inception a cell needs a pair to change
+    if (np < 2 && !incepts)
+    {
+        return;
+    }
+
+    coag::CellPopulation& population = w.population;
+    population.volume = cloud_.pMesh().cellVolumes()[celli];
+    population.particles.clear();
+    for (label i = 0; i < np; ++i)
+    {
+        const coagulationParticle& p = *index.cellParticles()[start + i];
+        coag::Particle cp;
+        cp.type.mass = p.mass();
+        cp.weight = p.weight();
+        cp.tag = i;
+        population.particles.push_back(cp);
+    }
+
+    // Counted in the worker, not in outcome: the outcomes of the cells that
+    // the other threads are stepping share its cache lines
+    w.events = coag::StepStatistics();
+    w.rng.engine().seed(cloud_.seeds()(celli, streamSeeds::cellStep));
+    {
+        std::fenv_t trapping;
+        std::feholdexcept(&trapping);
+        try
+        {
+            (incepts ? w.algorithm : w.algorithmNoInception)
+                ->advance(population, dt, w.rng, w.events);
+        }
+        catch (...)
+        {
+            std::feclearexcept(FE_ALL_EXCEPT);
+            std::fesetenv(&trapping);
+            throw;
+        }
+        std::feclearexcept(FE_ALL_EXCEPT);
+        std::fesetenv(&trapping);
+    }
+    outcome.events = w.events;
+
+    // Write the cell's new state back: survivors in place, new particles
+    // placed with the cell's stream (in population order, as they will be
+    // constructed), the rest recorded as gone
+    w.survived.assign(np, 0);
+    for (const coag::Particle& cp : population.particles)
+    {
+        if (cp.tag >= 0)
+        {
+            coagulationParticle& p = *index.cellParticles()[start + cp.tag];
+            p.mass() = cp.type.mass;
+            p.weight() = cp.weight;
+            w.survived[cp.tag] = 1;
+        }
+        else
+        {
+            bornParticle born;
+            born.mass = cp.type.mass;
+            born.weight = cp.weight;
+            born.place = tets_.sample(celli, w.rng);
+            outcome.born.push_back(born);
+        }
+    }
+    for (label i = 0; i < np; ++i)
+    {
+        if (!w.survived[i])
+        {
+            outcome.died.push_back(start + i);
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::cellStepper::advance
+(
+    const scalar dt,
+    coag::StepStatistics& events,
+    label& removed
+)
+{
+    cellParticleIndex& index = cloud_.index();
+    const label nCells = cloud_.pMesh().nCells();
+    index.sort(cloud_, nCells);
+    outcomes_.resize(nCells);
+
+    // The cells are independent jump processes: share them among the
+    // threads (the largest cells, downstream on a duct, are not known in
+    // advance, so cells are handed out one at a time)
+    std::string failure;
+    #pragma omp parallel for schedule(dynamic, 1) num_threads(cloud_.nThreads())
+    for (label celli = 0; celli < nCells; ++celli)
+    {
+        #ifdef _OPENMP
+        worker& w = workers_[omp_get_thread_num()];
+        #else
+        worker& w = workers_[0];
+        #endif
+        try
+        {
+            advanceCell(celli, dt, w, outcomes_[celli]);
+        }
+        catch (const std::exception& e)
+        {
+            #pragma omp critical(cellStepFailure)
+            if (failure.empty())
+            {
+                failure =
+                    "cell " + std::to_string(celli) + ": " + e.what();
+            }
+        }
+    }
+    if (!failure.empty())
+    {
+        FatalErrorInFunction
+            << "Cell step failed in " << failure << nl
+            << "    Check the kernel (K0), the inception rate and deltaT in "
+            << cloud_.properties().objectPath() << " and "
+            << cloud_.pMesh().time().controlDict().name() << nl
+            << exit(FatalError);
+    }
+
+    // Serially, in cell order: book the events, construct the new particles
+    // (ids are handed out in order) and delete the ones that are gone
+    listRemoved_.assign(index.particles().size(), 0);
+    for (label celli = 0; celli < nCells; ++celli)
+    {
+        for (const label i : outcomes_[celli].died)
+        {
+            listRemoved_[index.cellListIndex()[i]] = 1;
+        }
+    }
+    index.compact(listRemoved_);
+
+    for (label celli = 0; celli < nCells; ++celli)
+    {
+        const cellOutcome& outcome = outcomes_[celli];
+        events += outcome.events;
+
+        // Particles removed in the cell: DSA merges (including any
+        // incepted and merged away within this step) and halvings
+        removed +=
+            label(outcome.events.inceptions) - label(outcome.born.size())
+          + label(outcome.died.size());
+
+        for (const bornParticle& born : outcome.born)
+        {
+            coagulationParticle* pPtr = new coagulationParticle
+            (
+                cloud_.pMesh(),
+                born.place.coordinates,
+                celli,
+                born.place.tetFace,
+                born.place.tetPt,
+                born.mass,
+                born.weight
+            );
+            cloud_.addParticle(pPtr);
+            index.append(pPtr, celli);
+        }
+        for (const label i : outcome.died)
+        {
+            cloud_.deleteParticle(*index.cellParticles()[i]);
+        }
+    }
+    index.invalidateSort();
+}
+
+
+// ************************************************************************* //

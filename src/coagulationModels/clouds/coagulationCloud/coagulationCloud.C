@@ -1,0 +1,277 @@
+/*---------------------------------------------------------------------------*\
+  coagulationFoam: weighted stochastic particles coupled to OpenFOAM
+  Copyright (C) 2025-2026 the coagulationFoam authors
+  SPDX-License-Identifier: GPL-3.0-or-later (see COPYING); links OpenFOAM,
+  which is GPL-3.0-or-later too
+\*---------------------------------------------------------------------------*/
+
+#include "coagulationCloud.H"
+#include "caseChecks.H"
+#include "momentFields.H"
+#include "massBalance.H"
+
+#include <cstdlib>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+coag::NumberControl
+Foam::coagulationCloud::readNumberControl() const
+{
+    coag::NumberControl control;
+    if (properties_.found("numberControl"))
+    {
+        const dictionary& dict = properties_.subDict("numberControl");
+        caseChecks::keywords(dict, {"maxParticlesPerCell"});
+        const label maxParticles =
+            dict.getOrDefault<label>("maxParticlesPerCell", 0);
+        if (maxParticles < 0 || maxParticles == 1)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'maxParticlesPerCell' = " << maxParticles << " in "
+                << dict.name() << " must be 0 (off) or at least 2: halving"
+                << " keeps about half of the particles of a cell" << nl
+                << exit(FatalIOError);
+        }
+        control.maxParticles = std::size_t(maxParticles);
+    }
+    return control;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::coagulationCloud::coagulationCloud
+(
+    const volVectorField& U,
+    const word& cloudName
+)
+:
+    Cloud<coagulationParticle>(U.mesh(), cloudName, false),
+    mesh_(U.mesh()),
+    properties_
+    (
+        IOobject
+        (
+            "coagulationProperties",
+            mesh_.time().constant(),
+            mesh_,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    ),
+    algorithmName_(properties_.get<word>("algorithm")),
+    scaling_
+    (
+        properties_.subDict("statisticalWeight"), algorithmName_, mesh_
+    ),
+    seeds_(properties_, mesh_.time()),
+    kernel_(),
+    inception_(),
+    algorithm_(),
+    algorithmNoInception_(),
+    nThreads_(1),
+    index_(),
+    cellStepper_(),
+    transport_(),
+    injection_(),
+    events_(),
+    removedInCells_(0),
+    functions_(),
+    memoryLimit_(0),
+    pendingWrite_()
+{
+    // Every entry is checked: an unknown keyword is a typo, not a default
+    caseChecks::keywords
+    (
+        properties_,
+        {
+            "algorithm", "kernel", "inception", "inflow", "transport",
+            "statisticalWeight", "seed", "sampling", "numberControl"
+        }
+    );
+
+    kernel_ = coagulationKernel::New(properties_.subDict("kernel"), mesh_);
+    inception_ = inceptionModel::New
+    (
+        properties_.subDict("inception"), mesh_, scaling_.particleWeight()
+    );
+
+    const coag::NumberControl control = readNumberControl();
+    Info<< "Selecting cell algorithm " << algorithmName_ << endl;
+    algorithm_ = cellAlgorithm::New
+    (
+        algorithmName_, properties_, *kernel_, inception_->core(), control
+    );
+
+    // DSA halving would halve a cell's sample volume, but a mesh cell's
+    // volume is fixed: number control is for weighted particles only
+    if (algorithm_->equalWeights() && control.maxParticles > 0)
+    {
+        FatalIOErrorInFunction(properties_)
+            << "Entry 'numberControl/maxParticlesPerCell' in "
+            << properties_.name() << " needs weighted particles (SWA); "
+            << algorithmName_ << " keeps all weights equal" << nl
+            << exit(FatalIOError);
+    }
+
+    coag::InceptionModel noInception(inception_->core());
+    noInception.rate = 0;
+    algorithmNoInception_ = cellAlgorithm::New
+    (
+        algorithmName_, properties_, *kernel_, noInception, control
+    );
+
+    // Threads: OMP_NUM_THREADS, or all cores in a serial run; MPI ranks
+    // already share the cores, so one thread per rank there unless
+    // OMP_NUM_THREADS says otherwise
+    #ifdef _OPENMP
+    nThreads_ = omp_get_max_threads();
+    if (Pstream::parRun() && !std::getenv("OMP_NUM_THREADS"))
+    {
+        nThreads_ = 1;
+    }
+    #endif
+
+    cellStepper_.reset
+    (
+        new cellStepper(*this, *algorithm_, *algorithmNoInception_)
+    );
+    transport_ = transportModel::New
+    (
+        properties_.subOrEmptyDict("transport"), *this
+    );
+    if (properties_.found("inflow"))
+    {
+        injection_ = injectionModel::New(properties_.subDict("inflow"), *this);
+    }
+
+    // Particles of the start time, if any: of a completely written time of
+    // this mesh, each in a cell with a finite positive mass and weight
+    checkStartTime();
+    coagulationParticle::readFields(*this);
+    checkParticles();
+
+    // The cloud may grow into the memory free now, less a quarter for the
+    // rest of the run (fields, samples, the cell step's work arrays)
+    memoryLimit_ =
+        0.75*availableMemory()
+      + returnReduce(this->size(), sumOp<label>())*bytesPerParticle();
+
+    // Checked before anything is written
+    checkFlow(U);
+
+    for (const char* f : {"momentFields", "momentSampler", "massBalance"})
+    {
+        functions_.append(cloudFunction::New(f, *this));
+    }
+
+    Info<< "Coagulation cloud " << cloudName << ": "
+        << returnReduce(this->size(), sumOp<label>())
+        << " particles, weight per new particle "
+        << scaling_.particleWeight() << ", inception rate "
+        << inception_->core().rate << " in "
+        << returnReduce(inception_->nCells(mesh_.nCells()), sumOp<label>())
+        << " cells, " << nThreads_ << " thread(s) for the cell step"
+        << " (OMP_WAIT_POLICY "
+        << (std::getenv("OMP_WAIT_POLICY") ? std::getenv("OMP_WAIT_POLICY") : "unset")
+        << ")" << nl << endl;
+
+    if (nThreads_ > 1 && !std::getenv("OMP_WAIT_POLICY"))
+    {
+        WarningInFunction
+            << "OMP_WAIT_POLICY is not set: threads waiting for each other"
+            << " spin, which slows a run several times on a machine shared"
+            << " with other jobs. etc/bashrc sets it to PASSIVE" << nl << endl;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+const Foam::PtrList<Foam::volScalarField>&
+Foam::coagulationCloud::moments() const
+{
+    return refCast<const cloudFunctions::momentFields>(functions_[0]).fields();
+}
+
+
+void Foam::coagulationCloud::cellStep(const scalar dt)
+{
+    cellStepper_->advance(dt, events_, removedInCells_);
+    checkMemory();
+
+    for (cloudFunction& f : functions_)
+    {
+        f.postCellStep();
+    }
+}
+
+
+void Foam::coagulationCloud::transport
+(
+    const volVectorField& U,
+    const scalar dt
+)
+{
+    transportModel::outflow out(mesh_.boundaryMesh().size());
+    transport_->move(U, dt, out);
+
+    for (cloudFunction& f : functions_)
+    {
+        f.postMove(out);
+    }
+
+    if (injection_)
+    {
+        injection_->inject
+        (
+            U,
+            dt,
+            refCast<cloudFunctions::massBalance>(functions_[2]).inflow()
+        );
+    }
+}
+
+
+void Foam::coagulationCloud::postStep()
+{
+    for (cloudFunction& f : functions_)
+    {
+        f.postStep();
+    }
+}
+
+
+void Foam::coagulationCloud::evolve(const volVectorField& U, const scalar dt)
+{
+    cellStep(dt);
+    transport(U, dt);
+    postStep();
+}
+
+
+void Foam::coagulationCloud::onWrite()
+{
+    for (cloudFunction& f : functions_)
+    {
+        f.write();
+    }
+    pendingWrite_ = mesh_.time().timeName();
+}
+
+
+void Foam::coagulationCloud::endRun()
+{
+    for (cloudFunction& f : functions_)
+    {
+        f.end();
+    }
+    completeWrite();
+}
+
+
+// ************************************************************************* //

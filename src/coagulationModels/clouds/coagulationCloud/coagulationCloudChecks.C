@@ -1,0 +1,334 @@
+/*---------------------------------------------------------------------------*\
+  coagulationFoam: weighted stochastic particles coupled to OpenFOAM
+  Copyright (C) 2025-2026 the coagulationFoam authors
+  SPDX-License-Identifier: GPL-3.0-or-later (see COPYING); links OpenFOAM,
+  which is GPL-3.0-or-later too
+-------------------------------------------------------------------------------
+Description
+    The cloud's checks of its input (start time, particles, flow) and of its
+    size, and the completion marker of a written time.
+
+\*---------------------------------------------------------------------------*/
+
+#include "coagulationCloud.H"
+#include "caseChecks.H"
+#include "fvMesh.H"
+#include "surfaceFields.H"
+#include "OSspecific.H"
+#include "IFstream.H"
+
+#include <fstream>
+#include <string>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The name of the completion marker in <time>/uniform
+const Foam::word completeMarker("coagulationCloudComplete");
+
+//- The mesh's size and volume, as recorded with a written time
+Foam::dictionary meshSignature(const Foam::fvMesh& mesh)
+{
+    Foam::dictionary dict;
+    dict.add("nCells", mesh.nCells());
+    dict.add("nFaces", mesh.nFaces());
+    dict.add("nPoints", mesh.nPoints());
+    dict.add("volume", Foam::sum(mesh.V().field()));
+    return dict;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::coagulationCloud::availableMemory()
+{
+    std::ifstream meminfo("/proc/meminfo");
+    std::string key;
+    double kB = 0;
+    std::string unit;
+    while (meminfo >> key >> kB >> unit)
+    {
+        if (key == "MemAvailable:")
+        {
+            return 1024*kB;
+        }
+    }
+    return 1e18;
+}
+
+
+Foam::scalar Foam::coagulationCloud::bytesPerParticle()
+{
+    // The particle and its heap block; list, cell and sort arrays; the
+    // core's copy (coag::Particle) and a share of the sum tree in the cell
+    // step
+    return sizeof(coagulationParticle) + 16 + 4*sizeof(void*) + 64;
+}
+
+
+void Foam::coagulationCloud::checkMemory() const
+{
+    const scalar bytes = this->size()*bytesPerParticle();
+    if (bytes > memoryLimit_)
+    {
+        FatalErrorInFunction
+            << "The cloud holds " << this->size() << " particles (about "
+            << bytes/(1 << 30) << " GiB), more than the "
+            << memoryLimit_/(1 << 30) << " GiB it may take on this machine"
+            << " (three quarters of the memory available at the start)."
+            << nl << "    Lower statisticalWeight/n or set numberControl/"
+            << "maxParticlesPerCell in " << properties_.objectPath() << nl
+            << exit(FatalError);
+    }
+}
+
+
+void Foam::coagulationCloud::checkExpectedSize(const volVectorField& U) const
+{
+    // SWA never removes a computational particle but by outflow or halving:
+    // inception over one residence time (volume over outflow), or over the
+    // run if that is shorter, is how many the cloud will hold
+    if (algorithm_->equalWeights() || inception_->core().rate <= 0)
+    {
+        return;
+    }
+
+    const Time& runTime = mesh_.time();
+    scalar inceptionVolume = 0;
+    forAll(mesh_.V(), celli)
+    {
+        if (inception_->incepts(celli))
+        {
+            inceptionVolume += mesh_.V()[celli];
+        }
+    }
+    reduce(inceptionVolume, sumOp<scalar>());
+
+    scalar outflow = 0;
+    forAll(mesh_.boundaryMesh(), patchi)
+    {
+        const polyPatch& pp = mesh_.boundaryMesh()[patchi];
+        if (pp.type() == polyPatch::typeName)
+        {
+            outflow += sum
+            (
+                max
+                (
+                    U.boundaryField()[patchi] & mesh_.Sf().boundaryField()[patchi],
+                    scalar(0)
+                )
+            );
+        }
+    }
+    reduce(outflow, sumOp<scalar>());
+
+    const scalar volume = gSum(mesh_.V());
+    scalar residence = runTime.endTime().value() - runTime.value();
+    if (outflow > 0)
+    {
+        residence = min(residence, volume/outflow);
+    }
+
+    scalar expected =
+        inception_->core().rate*inceptionVolume*residence
+       /scaling_.particleWeight();
+    const label maxPerCell = label(algorithm_->control().maxParticles);
+    if (maxPerCell > 0)
+    {
+        expected = min
+        (
+            expected,
+            scalar(maxPerCell)*returnReduce(mesh_.nCells(), sumOp<label>())
+        );
+    }
+
+    const scalar bytes = expected*bytesPerParticle();
+    if (bytes > memoryLimit_)
+    {
+        FatalIOErrorInFunction(properties_)
+            << "Entry 'statisticalWeight/n' = " << scaling_.n() << " in "
+            << properties_.objectPath() << " asks for about " << expected
+            << " particles (inception over " << residence << " s, the"
+            << " residence time or the run), about " << bytes/(1 << 30)
+            << " GiB: more than the " << memoryLimit_/(1 << 30)
+            << " GiB this machine can give the cloud." << nl
+            << "    Lower n, or set numberControl { maxParticlesPerCell N; }"
+            << nl << exit(FatalIOError);
+    }
+}
+
+
+void Foam::coagulationCloud::checkStartTime() const
+{
+    const Time& runTime = mesh_.time();
+
+    // A time that OpenFOAM wrote (it has uniform/time) is complete once the
+    // run has marked it so, after every field and function object wrote
+    const fileName uniform(runTime.timePath()/"uniform");
+    bool incomplete =
+        isFile(uniform/"time") && !isFile(uniform/completeMarker);
+    reduce(incomplete, orOp<bool>());
+
+    if (incomplete)
+    {
+        // The latest earlier time that is complete, or not written by a run
+        word previous("none");
+        const instantList times = runTime.times();
+        forAllReverse(times, i)
+        {
+            if (times[i].value() < runTime.value() - 0.5*runTime.deltaTValue())
+            {
+                const fileName dir(runTime.path()/times[i].name()/"uniform");
+                if (!isFile(dir/"time") || isFile(dir/completeMarker))
+                {
+                    previous = times[i].name();
+                    break;
+                }
+            }
+        }
+
+        FatalErrorInFunction
+            << "Time " << runTime.timeName() << " of case " << runTime.path()
+            << " is incomplete: it has no uniform/" << completeMarker
+            << ", so the run that wrote it stopped while writing." << nl
+            << "    Restart from the latest complete time, " << previous
+            << ": remove (or rename) " << runTime.timePath()
+            << ", or set 'startFrom startTime; startTime " << previous
+            << ";' in " << runTime.controlDict().name() << nl
+            << exit(FatalError);
+    }
+
+    // Particles from another mesh would sit in the wrong cells
+    const fileName marker(uniform/completeMarker);
+    if (isFile(marker))
+    {
+        IFstream is(marker);
+        const dictionary written(is);
+        const dictionary current(meshSignature(mesh_));
+        for (const word key : {"nCells", "nFaces", "nPoints"})
+        {
+            if (written.get<label>(key) != current.get<label>(key))
+            {
+                FatalIOErrorInFunction(written)
+                    << "Time " << runTime.timeName() << " was written on a"
+                    << " mesh with " << key << " " << written.get<label>(key)
+                    << " (" << marker << "), but this mesh has "
+                    << current.get<label>(key) << ": its particles belong to"
+                    << " another mesh." << nl << exit(FatalIOError);
+            }
+        }
+        const scalar V0 = written.get<scalar>("volume");
+        const scalar V = current.get<scalar>("volume");
+        if (mag(V - V0) > 1e-9*max(mag(V0), VSMALL))
+        {
+            FatalIOErrorInFunction(written)
+                << "Time " << runTime.timeName() << " was written on a mesh"
+                << " of volume " << V0 << " (" << marker << "), but this mesh"
+                << " has " << V << ": its particles belong to another mesh."
+                << nl << exit(FatalIOError);
+        }
+    }
+}
+
+
+void Foam::coagulationCloud::checkParticles() const
+{
+    const label nCells = mesh_.nCells();
+    const label nFaces = mesh_.nFaces();
+    const fileName dir
+    (
+        mesh_.time().timePath()/cloud::prefix/this->name()
+    );
+
+    label i = 0;
+    for (const coagulationParticle& p : *this)
+    {
+        const label celli = p.cell();
+        const label facei = p.tetFace();
+        const bool inMesh =
+            celli >= 0 && celli < nCells && facei >= 0 && facei < nFaces
+         && mesh_.cells()[celli].found(facei)
+         && p.tetPt() >= 1 && p.tetPt() < mesh_.faces()[facei].size() - 1;
+        if (!inMesh)
+        {
+            FatalErrorInFunction
+                << "Particle " << i << " of " << dir/"positions"
+                << " is in cell " << celli << " (tet face " << facei
+                << ", point " << p.tetPt() << "), which is not a valid place"
+                << " in this mesh of " << nCells << " cells: the particles"
+                << " were written for another mesh" << nl << exit(FatalError);
+        }
+
+        const bool massOk = p.mass() > 0 && std::isfinite(p.mass());
+        if (!massOk || !(p.weight() > 0) || !std::isfinite(p.weight()))
+        {
+            FatalErrorInFunction
+                << "Particle " << i << " has mass " << p.mass()
+                << " and weight " << p.weight() << " in "
+                << dir/(massOk ? "weight" : "mass")
+                << ": both must be positive and finite" << nl
+                << exit(FatalError);
+        }
+        ++i;
+    }
+}
+
+
+void Foam::coagulationCloud::checkFlow(const volVectorField& U) const
+{
+    caseChecks::velocity(U);
+    caseChecks::emptyPatches(mesh_);
+    caseChecks::courant(U);
+    caseChecks::timeControls(mesh_.time());
+
+    // Inflow asked for must find an inlet
+    if (injection_)
+    {
+        injection_->checkFlow(U);
+    }
+
+    checkExpectedSize(U);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::coagulationCloud::completeWrite()
+{
+    if (pendingWrite_.empty())
+    {
+        return;
+    }
+
+    // The particle count and the mesh: what a restart from here checks
+    IOdictionary marker
+    (
+        IOobject
+        (
+            completeMarker,
+            pendingWrite_,
+            "uniform",
+            mesh_,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        meshSignature(mesh_)
+    );
+    marker.add("particles", this->size());
+    marker.regIOobject::writeObject
+    (
+        IOstream::ASCII,
+        IOstream::currentVersion,
+        IOstream::UNCOMPRESSED,
+        true
+    );
+    pendingWrite_.clear();
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,185 @@
+/*---------------------------------------------------------------------------*\
+  coagulationFoam: weighted stochastic particles coupled to OpenFOAM
+  Copyright (C) 2025-2026 the coagulationFoam authors
+  SPDX-License-Identifier: GPL-3.0-or-later (see COPYING); links OpenFOAM,
+  which is GPL-3.0-or-later too
+\*---------------------------------------------------------------------------*/
+
+#include "frozenFlow.H"
+#include "coagulationCloud.H"
+#include "caseChecks.H"
+#include "registerSwitch.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace transportModels
+{
+    defineTypeNameAndDebug(frozenFlow, 0);
+    addToRunTimeSelectionTable(transportModel, frozenFlow, dictionary);
+}
+}
+
+int Foam::transportModels::frozenFlow::cloudMove
+(
+    Foam::debug::optimisationSwitch("coagulationCloudMove", 0)
+);
+registerOptSwitch
+(
+    "coagulationCloudMove",
+    int,
+    Foam::transportModels::frozenFlow::cloudMove
+);
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::transportModels::frozenFlow::frozenFlow
+(
+    const dictionary& dict,
+    coagulationCloud& cloud
+)
+:
+    transportModel(cloud),
+    outcome_()
+{
+    caseChecks::keywords(dict, {"type"});
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::transportModels::frozenFlow::moveOnThreads
+(
+    const volVectorField& U,
+    coagulationParticle::trackingData& td,
+    const scalar dt
+)
+{
+    // What a move did with a particle (zero: kept, so that the array marks
+    // the particles to compact away)
+    enum : char { keptByMove = 0, leftByOutflow, droppedByTracking };
+
+    // The threads only read the mesh: its demand-driven parts that tracking
+    // uses are built here, serially, first
+    const polyMesh& mesh = cloud_.pMesh();
+    (void)mesh.tetBasePtIs();
+    (void)mesh.cells();
+    (void)mesh.cellCentres();
+    (void)mesh.geometricD();
+    (void)mesh.solutionD();
+
+    cellParticleIndex& index = cloud_.index();
+    index.list(cloud_);
+    const label nParticles = index.particles().size();
+    DynamicList<label>& cells = index.cells();
+    outcome_.resize(nParticles);
+
+    const label nPatches = mesh.boundaryMesh().size();
+
+    #pragma omp parallel num_threads(cloud_.nThreads())
+    {
+        // A particle's move changes only that particle; what it books as
+        // outflow here is discarded and booked below in list order, so that
+        // the sums do not depend on the thread count
+        List<label> outParticles(nPatches, Zero);
+        List<scalar> outNumber(nPatches, Zero);
+        List<scalar> outMass(nPatches, Zero);
+        coagulationParticle::trackingData threadTd
+        (
+            cloud_, U, outParticles, outNumber, outMass
+        );
+
+        #pragma omp for schedule(dynamic, 4096)
+        for (label k = 0; k < nParticles; ++k)
+        {
+            coagulationParticle& p = *index.particles()[k];
+            p.stepFraction() = 0;
+            const label booked = threadTd.nBooked();
+            const bool kept = p.move(cloud_, threadTd, dt);
+            outcome_[k] =
+                kept ? keptByMove
+              : threadTd.nBooked() > booked ? leftByOutflow
+              : droppedByTracking;
+            cells[k] = p.cell();
+        }
+
+        // Counts only: the same whatever the order the threads add them in
+        #pragma omp critical(frozenFlowMoveCounts)
+        {
+            for (label i = 0; i < threadTd.nStalled(); ++i)
+            {
+                td.bookStalled();
+            }
+            if (threadTd.nUnhandled())
+            {
+                td.bookUnhandled(threadTd.unhandledPatch());
+            }
+        }
+    }
+
+    for (label k = 0; k < nParticles; ++k)
+    {
+        if (outcome_[k] != keptByMove)
+        {
+            coagulationParticle& p = *index.particles()[k];
+            if (outcome_[k] == leftByOutflow)
+            {
+                td.bookOutflow(p.patch(), p);
+            }
+            cloud_.deleteParticle(p);
+        }
+    }
+    index.compact(outcome_);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::transportModels::frozenFlow::move
+(
+    const volVectorField& U,
+    const scalar dt,
+    outflow& out
+)
+{
+    coagulationParticle::trackingData td
+    (
+        cloud_, U, out.particles, out.number, out.mass
+    );
+    cloud_.index().invalidateSort();
+    if (!cloudMove && !Pstream::parRun())
+    {
+        moveOnThreads(U, td, dt);
+    }
+    else
+    {
+        // Decomposed runs hand particles to other processors: Cloud::move
+        // (and the walk of the linked list it implies)
+        cloud_.index().invalidateList();
+        cloud_.Cloud<coagulationParticle>::move(cloud_, td, dt);
+    }
+
+    // A particle that reached a patch type it does not handle was stopped
+    // (and is gone from the cloud): stop the run with the patch's name
+    if (returnReduce(td.nUnhandled(), sumOp<label>()) > 0)
+    {
+        const polyBoundaryMesh& patches = cloud_.pMesh().boundaryMesh();
+        const label patchi = td.unhandledPatch();
+        FatalErrorInFunction
+            << "Particles reached patch '"
+            << (patchi >= 0 ? patches[patchi].name() : word("?"))
+            << "' of type '"
+            << (patchi >= 0 ? patches[patchi].type() : word("?"))
+            << "' in " << patches.objectPath() << nl
+            << "    coagulationFoam handles patch (outflow), wall, symmetry,"
+            << " symmetryPlane and empty (rebound), processor, cyclic,"
+            << " cyclicAMI and wedge patches" << nl << exit(FatalError);
+    }
+    out.stalled = td.nStalled();
+}
+
+
+// ************************************************************************* //
