@@ -76,4 +76,19 @@ coagulationEnsemble -case "$COAGULATIONFOAM_DIR/tutorials/constantKernelDuct" -r
     -out "$workDir/huge" > "$workDir/log.bad5" 2>&1 && fail "a huge -realisations was taken"
 grep -q "at most 10000" "$workDir/log.bad5" || { cat "$workDir/log.bad5"; fail "message for a huge R"; }
 [ ! -d "$workDir/huge" ] || [ -z "$(ls "$workDir/huge")" ] || fail "a huge R made folders"
-echo "PASS ensemble: 2 realisations pooled; resumed past a half-written 0.6 from 0.3 to identical statistics; extended to 3; bad options refused"
+# ---- core-seconds count every thread: one short realisation on 2 threads
+rm -rf "$workDir/ensembleThreads"
+coagulationEnsemble -case "$COAGULATIONFOAM_DIR/tutorials/constantKernelDuct" -realisations 1 -threads 2 \
+    -out "$workDir/ensembleThreads" -set system/controlDict:endTime=0.01 \
+    -set system/controlDict:writeInterval=0.01 -set constant/coagulationProperties:sampling/tRelax=0 \
+    -- --no-plots > "$workDir/log.threads" 2>&1 || { tail -20 "$workDir/log.threads"; fail "2-thread ensemble failed"; }
+grep -q "2 thread(s) for the cell step" "$workDir/ensembleThreads/realisation_0/log.coagulationFoam" \
+    || fail "2-thread ensemble: the solver did not run on 2 threads"
+"$COAGULATIONFOAM_PYTHON" - "$workDir/ensembleThreads" <<'PY' || fail "cpuSeconds of the 2-thread ensemble"
+import json, sys
+e = json.load(open(sys.argv[1] + "/ensemble.json"))
+run = float(open(sys.argv[1] + "/realisation_0/runSeconds").read())
+print("2 threads: runSeconds %.3f, cpuSeconds %.3f" % (run, e["cpuSeconds"]))
+sys.exit(0 if e["threadsPerRank"] == 2 and abs(e["cpuSeconds"] - 2 * run) <= 0.002 else 1)
+PY
+echo "PASS ensemble: 2 realisations pooled; resumed past a half-written 0.6 from 0.3 to identical statistics; extended to 3; bad options refused; core-seconds count threads"

@@ -31,6 +31,17 @@ for f in table1.csv table1.md table2.csv table2.md rows.csv figure7.png figure8.
 done
 [ "$(wc -l < "$out/results/table1.csv")" -eq 6 ] || fail "table1.csv should have 5 rows"
 for r in "$out"/*_n*/realisation_*; do checkBalance "$r/log.coagulationFoam" > /dev/null; done
+# the rows of one study (SWA n = 512 and 1024; DSA2 n = 256 and 512) are independent: no
+# two realisations share a seed (separate studies number their rows from 1 again, so rows of
+# the three calls above do share seeds)
+for rows in "SWA_n512 SWA_n1024" "DSA2_n256 DSA2_n512"; do
+    seeds=$(for r in $rows; do cat "$out/$r"/realisation_*/constant/coagulationProperties; done \
+            | awk '$1 == "seed" { print $2 }')
+    nReal=$(for r in $rows; do ls -d "$out/$r"/realisation_*; done | wc -l)
+    [ "$(wc -l <<< "$seeds")" -eq "$nReal" ] || fail "$rows: $nReal realisations, $(wc -l <<< "$seeds") seeds"
+    dup=$(sort <<< "$seeds" | uniq -d | tr '\n' ' ')
+    [ -z "$dup" ] || fail "rows $rows share seeds: $dup"
+done
 
 # An interrupted row is resumed, not redone: SWA n = 1024 as if the study had been stopped
 # during its last realisation (the row's folder still .running, that realisation unfinished).

@@ -209,6 +209,40 @@ s = json.load(open('$TMP/pooled/summary.json'))
 sys.exit(0 if np.all(c == 242) and s['realisations'] == 2 else 1)" \
     && ok "realisations pooled (242 samples per cell, 2 realisations)" || ko "pooling counts"
 
+# pooled statistics = those of all in-window samples put together (numpy, computed here from
+# the files): realisations with different means (scale 1.2), so that the spread between them
+# counts; mean, sample sd (N - 1), count and 1.96 sd/sqrt(N) to round-off
+mk "$TMP/r3" single --seed 23 --scale 1.2 || ko "generator (realisation r3)"
+run_expect "pooled realisations of different means" 0 "$TMP/pool3.log" -- \
+    "$PY" "$REPORT" --no-plots --analytic none --out "$TMP/pooled3" --realisations "$TMP/r1" "$TMP/r3"
+if "$PY" - "$TMP/pooled3/moments_full.csv" "$TMP/r1" "$TMP/r3" <<'EOF'
+import sys
+import h5py
+import numpy as np
+res = np.genfromtxt(sys.argv[1], delimiter=",", names=True)
+parts = []
+for case in sys.argv[2:]:
+    with h5py.File(case + "/postProcessing/coagulationSamples/samples.h5", "r") as f:
+        t, m, x = f["time"][:], f["moments"][:], f["cellCentres"][:, 0]
+        keep = t >= f.attrs["tRelax"] - 1e-9
+        parts.append(m[keep][:, np.argsort(x), :])
+allm = np.concatenate(parts)                      # [samples][cells sorted by x][k]
+bad = []
+for k in range(4):
+    d = allm[:, :, k]
+    want = {"mean": d.mean(axis=0), "sd": d.std(axis=0, ddof=1), "count": np.full(d.shape[1], len(d)),
+            "ci95": 1.96 * d.std(axis=0, ddof=1) / np.sqrt(len(d))}
+    for key, v in want.items():
+        got = res["M%d_%s" % (k, key)]
+        err = np.max(np.abs(got / v - 1))
+        if not err < 1e-9:
+            bad.append("M%d_%s off by %.3g (relative)" % (k, key, err))
+print("\n".join(bad) if bad else "pooled mean, sd, count and ci95 of %d samples exact" % len(allm))
+sys.exit(1 if bad else 0)
+EOF
+then ok "pooled mean, sd (N-1), count, ci95 equal those of the samples put together"
+else ko "pooled statistics of realisations with different means"; fi
+
 # ---------------------------------------------------------------- additive kernel, auto reference
 A="$TMP/additiveDuct"
 mk "$A" single --seed 31 --kernel additive || ko "generator (additive)"

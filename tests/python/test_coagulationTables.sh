@@ -208,6 +208,9 @@ dsa1_corr2    --method DSA1 --n 2048 --realisations 2 --seed 23 --m1-last 10.5e3
 # last realisation ends at 0.3 (case 10); constant-kernel duct of section 3.1 (case 9)
 swa2048_short --method SWA --n 2048 --realisations 3 --seed 24 --last-t-end 0.3
 const256 --kernel constant --method SWA --n 256 --realisations 2 --seed 21
+# twelve realisations (case 12); the last cell's M1 sd twice eq. (47), 2 x 248.2 (case 13)
+swa2048_R12   --method SWA --n 2048 --realisations 12 --seed 25
+swa2048_lastsd --method SWA --n 2048 --realisations 3 --seed 26 --m1-last-sd 496.4
 ROWS
 GOOD=("$D/swa2048" "$D/swa8192" "$D/dsa1_2048" "$D/dsa2_2048" "$D/dsa2_8192")
 mkdir -p "$D/empty"
@@ -418,5 +421,21 @@ r = list(csv.DictReader(open('$S/single/table1.csv')))
 sys.exit(0 if len(r) == 1 and r[0]['realisations'] == '1' and r[0]['samples'] == '51'
          and r[0]['ci95_realisations'] == '' and r[0]['ci95'] != '' else 1)" \
     && ok "11. R = 1, 51 samples, no realisation-mean ci95" || ko "11. table1.csv of a single run"
+
+# ---------------------------------------------------------------- 12. a row of 12 realisations
+run_expect "12. a row of 12 realisations (realisation_0..realisation_11)" 0 "$TMP/r12.log" -- \
+    tables --rows "$D/swa2048_R12" --out "$S/r12" --no-plots
+"$PY" -c "
+import csv, sys
+r = list(csv.DictReader(open('$S/r12/table1.csv')))
+sys.exit(0 if len(r) == 1 and r[0]['realisations'] == '12' and r[0]['samples'] == '612' else 1)" \
+    && ok "12. every realisation pooled: R = 12, 612 samples" || ko "12. table1.csv of a row of 12 realisations"
+
+# ---------------------------------------------------------------- 13. eq. (47) in every cell
+run_expect "13. M1 sd twice eq. (47) in the last cell only" 1 "$TMP/lastsd.log" -- \
+    tables --rows "$D/swa2048_lastsd" --out "$S/lastsd" --no-plots --check
+expect_grep "13. normalised-sd check failed on that cell" "$TMP/lastsd.log" \
+    "^CHECK FAILED: SWA n=2048 normalised sd of M1 vs eq. \(47\).*worst \+99\.[0-9]% at x=0\.099"
+expect_grep "13. only that check failed" "$TMP/lastsd.log" "^checks: 3 run, 1 failed$"
 
 finish
