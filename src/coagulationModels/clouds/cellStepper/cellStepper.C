@@ -7,8 +7,8 @@
 
 #include "cellStepper.H"
 #include "coagulationCloud.H"
+#include "caseChecks.H"
 
-#include <cfenv>
 #include <string>
 
 #ifdef _OPENMP
@@ -82,21 +82,9 @@ void Foam::cellStepper::advanceCell
     w.events = coag::StepStatistics();
     w.rng.engine().seed(cloud_.seeds()(celli, streamSeeds::cellStep));
     {
-        std::fenv_t trapping;
-        std::feholdexcept(&trapping);
-        try
-        {
-            (incepts ? w.algorithm : w.algorithmNoInception)
-                ->advance(population, dt, w.rng, w.events);
-        }
-        catch (...)
-        {
-            std::feclearexcept(FE_ALL_EXCEPT);
-            std::fesetenv(&trapping);
-            throw;
-        }
-        std::feclearexcept(FE_ALL_EXCEPT);
-        std::fesetenv(&trapping);
+        const caseChecks::trapsHeld traps;
+        (incepts ? w.algorithm : w.algorithmNoInception)
+            ->advance(population, dt, w.rng, w.events);
     }
     outcome.events = w.events;
 
