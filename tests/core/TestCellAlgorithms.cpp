@@ -391,6 +391,40 @@ TEST_P(CellAlgorithmTest, RefusesAStepWithFarTooManyEvents)
     EXPECT_NO_THROW(alg2->advance(pop2, 0.2, rng, stats));
 }
 
+//- A cell's own kernel given to advance() (the OpenFOAM layer passes cellKernel(celli)):
+//  the step is exactly the step of an algorithm built with that kernel, whatever kernel the
+//  algorithm was built with and whichever kernel the previous call used (the majorant layout
+//  is taken from the call's kernel: the additive kernel has a tree column, the constant none).
+TEST_P(CellAlgorithmTest, KernelGivenPerCallActsAsBuiltIn)
+{
+    auto constant = makeKernel("constant", 1.0);
+    auto additive = makeKernel("additive", 0.05);
+    InceptionModel inception;
+    inception.rate = 200.0;
+    inception.type.mass = 1.0;
+    auto general = makeCellAlgorithm(GetParam(), *constant, inception);
+    auto withConstant = makeCellAlgorithm(GetParam(), *constant, inception);
+    auto withAdditive = makeCellAlgorithm(GetParam(), *additive, inception);
+    CellPopulation a = monodisperse(400, 4.0);
+    CellPopulation b = a;
+    Rng ra(77), rb(77);
+    StepStatistics sa, sb;
+    const CoagulationKernel* order[] = {additive.get(), additive.get(), constant.get(),
+                                        additive.get()};
+    for (const CoagulationKernel* k : order) {
+        general->advance(a, *k, 0.05, ra, sa);
+        (k == constant.get() ? withConstant : withAdditive)->advance(b, 0.05, rb, sb);
+        ASSERT_EQ(a.particles.size(), b.particles.size());
+        for (std::size_t j = 0; j < a.particles.size(); ++j) {
+            ASSERT_EQ(a.particles[j].type.mass, b.particles[j].type.mass) << j;
+            ASSERT_EQ(a.particles[j].weight, b.particles[j].weight) << j;
+        }
+        ASSERT_EQ(a.volume, b.volume);
+    }
+    EXPECT_EQ(sa.coagulations, sb.coagulations);
+    EXPECT_GT(sa.coagulations, 100u);
+}
+
 //- Number control is unbiased but not conservative: every halving's change of sum(w m) is
 //  booked in controlMass, so that a mass balance closes to round-off.
 //  (SWA: DSA halving halves the sample volume instead, and the layer refuses it.)

@@ -3,6 +3,10 @@
 #ifndef COAGULATION_NUMBERCONTROL_HPP
 #define COAGULATION_NUMBERCONTROL_HPP
 
+#include "coagulation/CellPopulation.hpp"
+#include "coagulation/Rng.hpp"
+#include "coagulation/StepStatistics.hpp"
+
 #include <cstddef>
 
 namespace coag {
@@ -35,6 +39,14 @@ struct NumberControl {
     std::size_t maxParticles = 0;
     std::size_t minParticles = 0;
 };
+
+//- The halving above: keep a uniformly random half; equalWeights (DSA) halves pop.volume,
+//  otherwise (SWA) the survivors' weights are doubled. Books the change of sum(w*m) in
+//  stats.controlMass and counts the halving.
+void halvePopulation(CellPopulation& pop, bool equalWeights, Rng& rng, StepStatistics& stats);
+
+//- The doubling above: every particle copied (tag -1), pop.volume doubled; booked likewise.
+void duplicatePopulation(CellPopulation& pop, StepStatistics& stats);
 
 } // namespace coag
 

@@ -84,7 +84,7 @@ void Foam::cellStepper::advanceCell
     {
         const caseChecks::trapsHeld traps;
         (incepts ? w.algorithm : w.algorithmNoInception)
-            ->advance(population, dt, w.rng, w.events);
+            ->advance(celli, population, dt, w.rng, w.events);
     }
     outcome.events = w.events;
 
