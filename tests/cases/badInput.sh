@@ -28,6 +28,7 @@ expectFatal()
 
 expectFatal missingAlgorithm   "algorithm"        -entry algorithm -remove
 expectFatal unknownAlgorithm   "DSA3"             -entry algorithm -set DSA3
+expectFatal unknownSplitting   "Strange"          -entry splitting -add Strange
 expectFatal missingKernel      "kernel"           -entry kernel -remove
 expectFatal unknownKernel      "quadratic"        -entry kernel/type -set quadratic
 expectFatal missingK0          "K0"               -entry kernel/K0 -remove

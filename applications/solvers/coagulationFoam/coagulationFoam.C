@@ -16,9 +16,12 @@ Description
     Wagner (2011): every mesh cell holds a weighted stochastic particle
     population (SWA; DSA1/DSA2 as options), stepped by operator splitting
 
-      1. inception + coagulation in every cell (exact stochastic jump process)
-      2. every particle moves with the frozen carrier flow U over the step
+      S. inception + coagulation in every cell (exact stochastic jump process)
+      A. every particle moves with the frozen carrier flow U over the step
          (continuous positions, outflow removed, inflow injected)
+
+    in the order S(dt) A(dt) (Lie, the paper's scheme, first order) or
+    A(dt/2) S(dt) A(dt/2) (Strang, second order): entry 'splitting'.
 
     Writes the moments M0..M3 as volScalarFields, the particles under
     lagrangian/coagulationCloud, and the sampled moment series to HDF5.
@@ -62,17 +65,30 @@ int main(int argc, char *argv[])
             << "  particles = " << returnReduce(cloud.size(), sumOp<label>())
             << nl;
 
-        // Operator splitting over dt (Patterson & Wagner 2011, §2):
-        // 1. the source terms: inception (eqs 10, 20) and coagulation (SWA
-        //    jumps 19-22, DSA jumps 9-15), each cell on its own
+        // Operator splitting over dt (Patterson & Wagner 2011, §2) of
+        //   S: the source terms, each cell on its own: inception (eqs 10,
+        //      20) and coagulation (SWA jumps 21-22, DSA jumps 11-15)
+        //   A: advection, every particle with the frozen flow U (outflow
+        //      leaves, walls rebound), then inflow enters
         timer.start();
-        cloud.cellStep(dt);
-        timer.stopCoagulation();
-
-        // 2. advection: every particle moves with the frozen flow U over dt
-        //    (outflow leaves, walls rebound), then inflow enters
-        cloud.transport(U, dt);
-        timer.stopTransport(cloud.size());
+        if (cloud.splitting() == coagulationCloud::splittingScheme::Lie)
+        {
+            // Lie, the paper's scheme: S(dt) then A(dt); first order in dt
+            cloud.cellStep(dt);
+            timer.coagulationDone();
+            cloud.transport(U, dt);
+            timer.transportDone(cloud.size());
+        }
+        else
+        {
+            // Strang: A(dt/2), S(dt), A(dt/2); second order in dt
+            cloud.transport(U, 0.5*dt, streamSeeds::inflowFirstHalf);
+            timer.transportDone(cloud.size());
+            cloud.cellStep(dt);
+            timer.coagulationDone();
+            cloud.transport(U, 0.5*dt);
+            timer.transportDone(cloud.size());
+        }
 
         // The cloud functions on the new state: M0..M3 (eq. 37), samples
         cloud.postStep();

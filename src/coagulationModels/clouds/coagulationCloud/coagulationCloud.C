@@ -16,6 +16,16 @@
 #include <omp.h>
 #endif
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::coagulationCloud::splittingScheme>
+Foam::coagulationCloud::splittingSchemeNames
+({
+    { splittingScheme::Lie, "Lie" },
+    { splittingScheme::Strang, "Strang" }
+});
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 coag::NumberControl
@@ -64,6 +74,7 @@ Foam::coagulationCloud::coagulationCloud
         )
     ),
     algorithmName_(properties_.get<word>("algorithm")),
+    splitting_(splittingScheme::Lie),
     scaling_
     (
         properties_.subDict("statisticalWeight"), algorithmName_, mesh_
@@ -90,9 +101,25 @@ Foam::coagulationCloud::coagulationCloud
         properties_,
         {
             "algorithm", "kernel", "inception", "inflow", "transport",
-            "statisticalWeight", "seed", "sampling", "numberControl"
+            "statisticalWeight", "seed", "sampling", "numberControl",
+            "splitting"
         }
     );
+
+    const word scheme =
+        properties_.getOrDefault<word>
+        (
+            "splitting", splittingSchemeNames[splittingScheme::Lie]
+        );
+    if (!splittingSchemeNames.found(scheme))
+    {
+        FatalIOErrorInFunction(properties_)
+            << "Entry 'splitting' in " << properties_.name() << " is '"
+            << scheme << "'; valid schemes are " << splittingSchemeNames
+            << nl << exit(FatalIOError);
+    }
+    splitting_ = splittingSchemeNames[scheme];
+    Info<< "Splitting " << scheme << endl;
 
     kernel_ = coagulationKernel::New(properties_.subDict("kernel"), mesh_);
     inception_ = inceptionModel::New
@@ -214,7 +241,8 @@ void Foam::coagulationCloud::cellStep(const scalar dt)
 void Foam::coagulationCloud::transport
 (
     const volVectorField& U,
-    const scalar dt
+    const scalar dt,
+    const streamSeeds::purpose inflowStream
 )
 {
     transportModel::outflow out(mesh_.boundaryMesh().size());
@@ -231,6 +259,7 @@ void Foam::coagulationCloud::transport
         (
             U,
             dt,
+            inflowStream,
             refCast<cloudFunctions::massBalance>(functions_[2]).inflow()
         );
     }
@@ -243,14 +272,6 @@ void Foam::coagulationCloud::postStep()
     {
         f.postStep();
     }
-}
-
-
-void Foam::coagulationCloud::evolve(const volVectorField& U, const scalar dt)
-{
-    cellStep(dt);
-    transport(U, dt);
-    postStep();
 }
 
 

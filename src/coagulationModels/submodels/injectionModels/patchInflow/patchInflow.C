@@ -110,6 +110,7 @@ void Foam::injectionModels::patchInflow::inject
 (
     const volVectorField& U,
     const scalar dt,
+    const streamSeeds::purpose stream,
     particleBalance& entered
 )
 {
@@ -140,7 +141,7 @@ void Foam::injectionModels::patchInflow::inject
             // c_in * flux * dt / W
             rng_.engine().seed
             (
-                cloud_.seeds()(pp.start() + facei, streamSeeds::inflow)
+                cloud_.seeds()(pp.start() + facei, stream)
             );
             std::poisson_distribution<label> count(density_*inwardFlux*dt/W);
             const label nNew = count(rng_.engine());
