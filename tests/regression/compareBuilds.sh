@@ -1,6 +1,7 @@
 #!/bin/bash
 # compareBuilds.sh REF NEW [WORK]: the same short runs with two built checkouts of
-# coagulationFoam (each with its etc/bashrc and platforms/), compared byte for byte.
+# coagulationFoam (each with its etc/bashrc, platforms/ and its own tutorials), compared byte
+# for byte.
 #
 # For a change that must not change results (a refactoring): every file of every written time
 # (M0..M3, the fieldAverage fields M*Mean and M*Prime2Mean, U, the particles under
@@ -28,7 +29,6 @@ ref="$(cd "${args[0]}" && pwd)"
 new="$(cd "${args[1]}" && pwd)"
 work="${args[2]:-$(mktemp -d)}"
 mkdir -p "$work"
-tutorials="$new/tutorials"
 
 # runCase build name tutorial threads edits...: one run with one build, in $work/<build>/<name>
 runCase()
@@ -37,7 +37,7 @@ runCase()
     local side; side=$([ "$build" = "$ref" ] && echo ref || echo new)
     local d="$work/$side/$name"
     rm -rf "$d"; mkdir -p "$(dirname "$d")"
-    cp -r "$tutorials/$tutorial" "$d"
+    cp -r "$build/tutorials/$tutorial" "$d"   # each build with its own tutorials
     (
         # shellcheck source=/dev/null
         . "$build/etc/bashrc"
