@@ -126,6 +126,14 @@ def test_standard_error_of_sd():
     assert s.std() == pytest.approx(se, rel=0.05)
 
 
+def test_normalised_sd():
+    """sqrt(n var)/m_k with the analytic m_k where there is one, else the sample mean."""
+    var = np.array([4.0, 9.0, 1.0])
+    got = st.normalised_sd(16, var, np.array([2.0, np.nan, 4.0]), np.array([5.0, 6.0, 7.0]))
+    np.testing.assert_allclose(got, [4.0, 2.0, 1.0])
+    assert np.all(np.isnan(st.normalised_sd(None, var, var, var)))
+
+
 def test_fit_exponent():
     ns = [2048, 8192, 32768]
     assert st.fit_exponent(ns, [3.0 * n**-0.5 for n in ns]) == pytest.approx(-0.5, abs=1e-12)

@@ -113,8 +113,7 @@ def compute(cases, t_relax=None, t_end=None, u=None, x_inlet=0.0, analytic_kind=
         ana_ctr[:, :k] = analytic.profile(kind, x - x_inlet, I, K0, uu).T[:, :k]
     with np.errstate(invalid="ignore", divide="ignore"):
         rel = (mean - ana_avg) / ana_avg
-        norm_ref = np.where(np.isfinite(ana_avg), ana_avg, mean)
-        nsd = np.sqrt(meta["n"] * var) / norm_ref if meta["n"] else np.full_like(var, np.nan)
+    nsd = statistics.normalised_sd(meta["n"], var, ana_avg, mean)
 
     return {
         "meta": meta, "centres": centres, "x": x, "count": count, "mean": mean,

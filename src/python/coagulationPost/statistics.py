@@ -74,6 +74,16 @@ def summary(count, mean, m2):
     return {"mean": mean, "var": var, "sd": sd, "ci": ci}
 
 
+def normalised_sd(n, var, reference, mean):
+    """sqrt(n var(M_{n,k})) / m_k, the left side of eq. (47) and the quantity of the
+    paper's Figures 3-6 and 9: m_k the analytic reference where it is finite, else the
+    sample mean; NaN without a statistical weight n."""
+    if not n:
+        return np.full_like(var, np.nan)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.sqrt(n * var) / np.where(np.isfinite(reference), reference, mean)
+
+
 class Accumulator:
     """Per-cell, per-moment count / mean / m2, pooled batch by batch with merge;
     cells are ids (samples.CellIndex), the arrays grow as new ids appear."""

@@ -120,9 +120,7 @@ def load_row(row_dir, t_end):
     res0 = per[0]
     windows = [(r["tRelax"], r["timeRange"][1] if t_end is None else min(t_end, r["timeRange"][1]))
                for p in per for r in p["meta"]["runs"]]
-    with np.errstate(invalid="ignore", divide="ignore"):
-        nsd = np.sqrt(meta["n"] * var) / np.where(np.isfinite(res0["analytic"]), res0["analytic"],
-                                                  pooled["mean"])
+    nsd = statistics.normalised_sd(meta["n"], var, res0["analytic"], pooled["mean"])
     return {
         "dir": row_dir, "method": meta["algorithm"], "kernel": meta["kernel"], "n": int(meta["n"]),
         "V1": meta["V1"], "I": meta["inceptionRate"], "K0": meta["K0"], "u": meta["u"],
