@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Self-test of applications/utilities/coagulationReport (coagulationReport.py, analyticDuct.py).
+# Self-test of applications/utilities/coagulationReport (coagulationReport.py and the package
+# src/python/coagulationPost it runs on; unit tests of the package: tests/python/test_*.py).
 #
 # Builds synthetic solver output (HDF5, the solver's layout) in a temporary directory:
 # constant-kernel duct moments (paper §3.1, I = 3e8, K0 = 1e-5, 50 cells of 4e-3) equal to
@@ -15,8 +16,8 @@ set -u
 HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 # shellcheck source=/dev/null
 . "$HERE/selfTestLib.sh" coagulationReportTest
-TOOLDIR="$ROOT/applications/utilities/coagulationReport"
-REPORT="$TOOLDIR/coagulationReport.py"
+REPORT="$ROOT/applications/utilities/coagulationReport/coagulationReport.py"
+PKGDIR="$ROOT/src/python"
 
 # ---------------------------------------------------------------- synthetic data generator
 cat > "$TMP/make_case.py" <<'EOF'
@@ -34,7 +35,7 @@ ap.add_argument("case"); ap.add_argument("layout")
 ap.add_argument("--scale", type=float, default=1.0)
 ap.add_argument("--seed", type=int, default=1)
 ap.add_argument("--kernel", default="constant")
-ap.add_argument("--tooldir")
+ap.add_argument("--pkgdir")
 a = ap.parse_args()
 rng = np.random.default_rng(a.seed)
 
@@ -47,7 +48,7 @@ hi = lo + dx
 xc = 0.5 * (lo + hi)
 
 if a.kernel == "constant":
-    # exact cell averages from antiderivatives (independent of analyticDuct's quadrature)
+    # exact cell averages from antiderivatives (independent of coagulationPost's quadrature)
     A = np.sqrt(I * K0 / 2.0)
     def P(x):  # antiderivatives of m0..m3 (u = 1)
         return np.stack([np.sqrt(2 * I / K0) * np.log(np.cosh(A * x)) / A,
@@ -56,9 +57,9 @@ if a.kernel == "constant":
                          I * x**2 / 2 + K0 * I**2 * x**4 / 4 + K0**2 * I**3 * x**6 / 30])
     avg = (P(hi) - P(lo)) / dx                      # (4, nc)
 else:
-    sys.path.insert(0, a.tooldir)
-    import analyticDuct
-    avg = analyticDuct.cell_average("additiveDuct", lo, hi, I, K0)
+    sys.path.insert(0, a.pkgdir)
+    from coagulationPost import analytic
+    avg = analytic.cell_average("additiveDuct", lo, hi, I, K0)
     avg[1] = I * xc                                 # eq. (50), exact
 
 centres = np.stack([xc, np.full(nc, 5e-3), np.full(nc, 5e-3)], axis=1)
@@ -95,14 +96,14 @@ else:
     sys.exit("unknown layout " + a.layout)
 EOF
 
-mk() { "$PY" "$TMP/make_case.py" --tooldir "$TOOLDIR" "$@"; }
+mk() { "$PY" "$TMP/make_case.py" --pkgdir "$PKGDIR" "$@"; }
 
-# ---------------------------------------------------------------- analyticDuct
-if "$PY" - "$TOOLDIR" <<'EOF'
+# ---------------------------------------------------------------- coagulationPost.analytic
+if "$PY" - "$PKGDIR" <<'EOF'
 import sys
 import numpy as np
 sys.path.insert(0, sys.argv[1])
-import analyticDuct as a
+from coagulationPost import analytic as a
 bad = []
 m = a.additive_duct(np.array([0.099]), 1e5, 1.06e-2)[:, 0]
 if abs(m[1] - 9.9e3) > 1e-6 * 9.9e3: bad.append("additive m1(0.099) = %g" % m[1])
@@ -122,8 +123,8 @@ if not (np.allclose(lo2, [0.004, 0.0, 0.008]) and np.allclose(hi2, [0.008, 0.004
 print("\n".join(bad) if bad else "m1(0.099) = %.6g, m2(0.099) = %.6g" % (m[1], m[2]))
 sys.exit(1 if bad else 0)
 EOF
-then ok "analyticDuct: additive sanity values, constant-duct ODE = closed form, cell averages"
-else ko "analyticDuct reference values"; fi
+then ok "analytic: additive sanity values, constant-duct ODE = closed form, cell averages"
+else ko "analytic reference values"; fi
 
 # ---------------------------------------------------------------- constant duct, split + restart
 C="$TMP/constantDuct"

@@ -4,9 +4,11 @@
 Patterson & Wagner, "A stochastic weighted particle method for coagulation-
 advection problems", section 3:
 
-* constant kernel K = K0 (section 3.1): closed forms, eqs (39), (41), (43), (45);
+* constant kernel K = K0 (section 3.1): closed forms, eqs (39), (41), (43), (45)
+  of the moment equations (38), (40), (42), (44);
 * additive kernel K = K0 (i + j) (section 3.2): m1 from eq (50), m0, m2, m3 from
-  the steady moment equations integrated numerically.
+  the steady moment equations integrated numerically;
+* the normalised standard deviation of M_{n,1} from inception alone, eq (47).
 
 Conventions
 -----------
@@ -25,15 +27,15 @@ Steady moment equations (u dm/dx = ...):
 
 Public functions
 ----------------
-constant_duct(x, I, K0, u)              closed forms, shape (4,) + x.shape
+mass_moment(x, I, u)                    m1 = I x/u, eqs (41) and (50)
+constant_duct(x, I, K0, u)              closed forms (39)-(45), shape (4,) + x.shape
 duct_ode(kernel, x, I, K0, u)           moment ODEs ("constant" or "additive")
 additive_duct(x, I, K0, u)              duct_ode("additive", ...) with exact m1
+normalised_sd_m1(x, I, V1, u)           sqrt(n var(M_{n,1}))/m1 = sqrt(u/(I V1 x)), eq (47)
 profile(kind, x, I, K0, u)              kind in KINDS
 cell_edges(centres, x_inlet)            cell faces from 1-D cell centres
 cell_average(kind, lo, hi, I, K0, u)    mean of the profile over [lo, hi]
 kind_for_kernel(kernel)                 "constant" -> "constantDuct", ...
-
-Run as a script for a quick sanity printout:  python3 analyticDuct.py
 """
 
 import numpy as np
@@ -54,8 +56,17 @@ def kind_for_kernel(kernel):
     return _KERNEL_TO_KIND.get(str(kernel).strip().lower())
 
 
+def mass_moment(x, I, u=1.0):
+    """m1(x) = I x/u: mass is advected, coagulation conserves it.
+
+    Eq (41) (constant kernel, I = 3 I0) and eq (50) (any kernel, the steady limit
+    of eqs 48-49).  Negative x (upstream of the inlet) gives 0."""
+    return I * np.maximum(np.asarray(x, dtype=float), 0.0) / u
+
+
 def constant_duct(x, I, K0, u=1.0):
-    """Closed-form moments of the constant-kernel duct, eqs (39)-(45) with 3 I0 = I.
+    """Closed-form moments of the constant-kernel duct, eqs (39), (41), (43), (45)
+    with 3 I0 = I, the solutions of the moment equations (38), (40), (42), (44).
 
     Returns an array of shape (4,) + shape(x): m0, m1, m2, m3.
     Negative x (upstream of the inlet) gives zeros.
@@ -63,26 +74,26 @@ def constant_duct(x, I, K0, u=1.0):
     x = np.maximum(np.asarray(x, dtype=float), 0.0)
     s = x / u  # residence time
     if K0 > 0.0:
-        m0 = np.sqrt(2.0 * I / K0) * np.tanh(np.sqrt(I * K0 / 2.0) * s)
+        m0 = np.sqrt(2.0 * I / K0) * np.tanh(np.sqrt(I * K0 / 2.0) * s)   # eq (39)
     else:
         m0 = I * s
-    m1 = I * s
-    m2 = I * s + K0 * I**2 * s**3 / 3.0
-    m3 = I * s + K0 * I**2 * s**3 + K0**2 * I**3 * s**5 / 5.0
+    m1 = mass_moment(x, I, u)                                             # eq (41)
+    m2 = I * s + K0 * I**2 * s**3 / 3.0                                   # eq (43)
+    m3 = I * s + K0 * I**2 * s**3 + K0**2 * I**3 * s**5 / 5.0             # eq (45)
     return np.stack([m0, m1, m2, m3])
 
 
 def _rhs(kernel, I, K0, u):
     kernel = kernel.lower()
     if kernel == "constant":
-        def f(_x, m):
+        def f(_x, m):   # eqs (38), (40), (42), (44)
             m0, m1, m2, m3 = m
             return np.array([I - 0.5 * K0 * m0 * m0,
                              I,
                              I + K0 * m1 * m1,
                              I + 3.0 * K0 * m1 * m2]) / u
     elif kernel == "additive":
-        def f(_x, m):
+        def f(_x, m):   # m1' from eq (48); the others from eq (34) with K = K0 (i + j)
             m0, m1, m2, m3 = m
             return np.array([I - K0 * m0 * m1,
                              I,
@@ -96,7 +107,7 @@ def _rhs(kernel, I, K0, u):
 def duct_ode(kernel, x, I, K0, u=1.0, rtol=1e-10):
     """Integrate the steady moment ODEs from m = 0 at x = 0 (scipy solve_ivp).
 
-    kernel: "constant" or "additive".  Returns shape (4,) + shape(x).
+    kernel: "constant" (eqs 38, 40, 42, 44) or "additive".  Returns shape (4,) + shape(x).
     One integration covers all requested points (any order, repeats allowed).
     """
     from scipy.integrate import solve_ivp
@@ -123,8 +134,18 @@ def duct_ode(kernel, x, I, K0, u=1.0, rtol=1e-10):
 def additive_duct(x, I, K0, u=1.0, rtol=1e-10):
     """Moments of the additive-kernel duct: m1 = I x/u (eq 50), m0, m2, m3 by ODE."""
     m = duct_ode("additive", x, I, K0, u, rtol=rtol)
-    m[1] = I * np.maximum(np.asarray(x, dtype=float), 0.0) / u
+    m[1] = mass_moment(x, I, u)
     return m
+
+
+def normalised_sd_m1(x, I, V1, u=1.0):
+    """Normalised standard deviation of M_{n,1} from inception alone, eq (47):
+
+        sqrt(n var(M_{n,1}(x))) / m1(x) = sqrt(u / (I V1 x)),   I = 3 I0,
+
+    x the distance from the inlet (the cell centre).  It holds for both kernels
+    (section 3.2: Figure 9 as Figure 4)."""
+    return np.sqrt(u / (I * V1 * np.asarray(x, dtype=float)))
 
 
 def profile(kind, x, I, K0, u=1.0):
@@ -177,14 +198,3 @@ def cell_average(kind, lo, hi, I, K0, u=1.0, x_inlet=0.0, nodes=8):
     if np.any(zero):
         avg[:, zero] = profile(kind, mid[zero] - x_inlet, I, K0, u)
     return avg
-
-
-if __name__ == "__main__":
-    x = np.array([0.002, 0.05, 0.099, 0.198])
-    np.set_printoptions(linewidth=120)
-    print("constant duct, I = 3e8, K0 = 1e-5:")
-    print(constant_duct(x, 3e8, 1e-5))
-    print("additive duct, I = 1e5, K0 = 1.06e-2 (x = 0.099: m1 = 9.9e3, m2 ~ 9.1e7):")
-    print(additive_duct(x[:3], 1e5, 1.06e-2))
-    print("additive duct, average over cell [0.098, 0.1]:")
-    print(cell_average("additiveDuct", [0.098], [0.1], 1e5, 1.06e-2)[:, 0])

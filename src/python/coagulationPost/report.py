@@ -1,0 +1,195 @@
+# SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
+"""Per-cell moment statistics of one case, or of realisations pooled, against the
+analytic duct reference; their CSV, JSON and text table (coagulationReport).
+
+For every cell and moment k, over the samples with t_relax <= t <= t_end (pooled
+over all realisations; successive samples are treated as independent, as in the
+paper): sample mean, sample standard deviation, count, 95 % confidence half-width
+of the mean 1.96 sd / sqrt(count), and the normalised standard deviation
+sqrt(n var(M_k)) / m_k (m_k the cell-averaged analytic reference where there is
+one, otherwise the sample mean).  Cells are sorted by x.
+"""
+
+import json
+import os
+
+import numpy as np
+
+from . import analytic, samples, statistics
+from .samples import InputError, warn
+
+MOMENT_NAMES = ("number density", "mass", "second moment", "third moment")
+EQ_LABELS = {"constantDuct": ("eq. 39", "eq. 41", "eq. 43", "eq. 45"),
+             "additiveDuct": ("moment ODE", "eq. 50", "moment ODE", "moment ODE")}
+
+
+def compute(cases, t_relax=None, t_end=None, u=None, x_inlet=0.0, analytic_kind="auto"):
+    """Statistics of the runs in `cases` (case directories, pooled).
+
+    t_relax None: the files' tRelax; t_end None: all samples; u None: attribute u,
+    else 1.0; analytic_kind "auto" (from the kernel attribute), "none" or one of
+    analytic.KINDS.  Returns a dict of per-cell arrays [cells][moments] (count,
+    mean, sd, var, ci, analytic, analyticCentre, rel, nsd), x, centres, the cell
+    edges and meta (run attributes, realisations, the reference used)."""
+    reader, acc, runs = samples.RunReader(), None, []
+    for c in cases:
+        ids, data, info = reader.read(c, t_relax, t_end)
+        if acc is None:
+            acc = statistics.Accumulator(reader.nmom)
+        acc.add(ids, data)
+        runs.append(info)
+    ref = reader.ref
+    centres = np.array(reader.cells.centres)
+    order = np.lexsort((centres[:, 2], centres[:, 1], centres[:, 0]))
+    centres = centres[order]
+    count = acc.count[order]
+    st = statistics.summary(count, acc.mean[order], acc.m2[order])
+    mean, var, sd, ci = st["mean"], st["var"], st["sd"], st["ci"]
+    empty = int((count[:, 0] == 0).sum())
+    if empty == len(count):
+        raise InputError("no sample with %s <= t <= %s in any cell"
+                         % (runs[0]["tRelax"], "inf" if t_end is None else t_end))
+    if empty:
+        warn("%d cell(s) have no sample in the time window" % empty)
+
+    # duplicate seeds across realisations are not independent
+    if len(runs) > 1:
+        seen = {}
+        for r in runs:
+            for s in r["seeds"]:
+                if s in seen:
+                    warn("seed %r appears in both %s and %s: realisations not independent"
+                         % (s, seen[s], r["case"]))
+                seen.setdefault(s, r["case"])
+
+    def num(key, default=None):
+        v = ref.get(key, default)
+        try:
+            return float(v)
+        except (TypeError, ValueError):
+            return default
+
+    meta = {
+        "algorithm": str(ref.get("algorithm", "?")),
+        "kernel": str(ref.get("kernel", "?")),
+        "n": num("n"),
+        "V1": num("V1"),
+        "K0": num("K0"),
+        "inceptionRate": num("inceptionRate"),
+        "splitDeltaT": num("splitDeltaT"),
+        "sampleInterval": num("sampleInterval"),
+        "u": u if u is not None else num("u", 1.0),
+        "xInlet": x_inlet,
+        "realisations": len(runs),
+        "runs": runs,
+    }
+
+    # analytic reference
+    kind = analytic_kind
+    if kind == "auto":
+        kind = analytic.kind_for_kernel(meta["kernel"])
+        if kind is None:
+            print("no analytic reference for kernel '%s'" % meta["kernel"])
+    elif kind == "none":
+        kind = None
+    elif analytic.kind_for_kernel(meta["kernel"]) not in (None, kind):
+        warn("--analytic %s but the runs used the '%s' kernel" % (kind, meta["kernel"]))
+    if kind is not None:
+        for key in ("inceptionRate", "K0"):
+            if meta[key] is None:
+                raise InputError("analytic reference %s needs the attribute '%s'" % (kind, key))
+    meta["analytic"] = kind
+
+    x = centres[:, 0]
+    nm = count.shape[1]
+    ana_avg = np.full((len(x), nm), np.nan)
+    ana_ctr = np.full((len(x), nm), np.nan)
+    lo = hi = None
+    if kind is not None:
+        I, K0, uu = meta["inceptionRate"], meta["K0"], meta["u"]
+        lo, hi = analytic.cell_edges(x, x_inlet)
+        k = min(nm, analytic.N_MOMENTS)
+        ana_avg[:, :k] = analytic.cell_average(kind, lo, hi, I, K0, uu, x_inlet).T[:, :k]
+        ana_ctr[:, :k] = analytic.profile(kind, x - x_inlet, I, K0, uu).T[:, :k]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        rel = (mean - ana_avg) / ana_avg
+    nsd = statistics.normalised_sd(meta["n"], var, ana_avg, mean)
+
+    return {
+        "meta": meta, "centres": centres, "x": x, "count": count, "mean": mean,
+        "sd": sd, "ci": ci, "var": var, "analytic": ana_avg, "analyticCentre": ana_ctr,
+        "rel": rel, "nsd": nsd, "edges": (lo, hi),
+    }
+
+
+# --------------------------------------------------------------------------- output
+
+def fmt(v):
+    return "nan" if not np.isfinite(v) else "%.12g" % v
+
+
+def write_csv(res, out):
+    """moments.csv (x, Mk_mean, Mk_ci95) and moments_full.csv (every column)."""
+    nm = res["mean"].shape[1]
+    p1 = os.path.join(out, "moments.csv")
+    with open(p1, "w") as f:
+        f.write("x," + ",".join("M%d_mean,M%d_ci95" % (k, k) for k in range(nm)) + "\n")
+        for i, x in enumerate(res["x"]):
+            f.write(fmt(x) + "," + ",".join(
+                fmt(res["mean"][i, k]) + "," + fmt(res["ci"][i, k]) for k in range(nm)) + "\n")
+    p2 = os.path.join(out, "moments_full.csv")
+    cols = ("mean", "sd", "count", "ci95", "analytic", "analyticCentre", "relErr", "normStdDev")
+    keys = ("mean", "sd", "count", "ci", "analytic", "analyticCentre", "rel", "nsd")
+    with open(p2, "w") as f:
+        f.write("x,y,z," + ",".join("M%d_%s" % (k, c) for k in range(nm) for c in cols) + "\n")
+        for i, c in enumerate(res["centres"]):
+            row = [fmt(v) for v in c]
+            for k in range(nm):
+                for key in keys:
+                    v = res[key][i, k]
+                    row.append("%d" % v if key == "count" else fmt(v))
+            f.write(",".join(row) + "\n")
+    return [p1, p2]
+
+
+def write_summary(res, out, t_end):
+    meta = dict(res["meta"])
+    meta["tRelax"] = meta["runs"][0]["tRelax"]
+    meta["tEnd"] = t_end
+    meta["samplesPerCell"] = [int(res["count"][:, 0].min()), int(res["count"][:, 0].max())]
+    meta["nCells"] = int(len(res["x"]))
+    p = os.path.join(out, "summary.json")
+    with open(p, "w") as f:
+        json.dump(meta, f, indent=2, default=str)
+        f.write("\n")
+    return p
+
+
+def title_of(meta, t_relax, t_end):
+    n = meta["n"]
+    ns = ("%d" % n) if n is not None and float(n).is_integer() else str(n)
+    t = "%s, n = %s, %s kernel" % (meta["algorithm"], ns, meta["kernel"])
+    r = meta["realisations"]
+    t += ", %d realisation%s" % (r, "" if r == 1 else "s")
+    t += ", t in [%g, %s]" % (t_relax, "end" if t_end is None else "%g" % t_end)
+    return t
+
+
+def print_table(res, t_end):
+    meta = res["meta"]
+    nm = res["mean"].shape[1]
+    print(title_of(meta, meta["runs"][0]["tRelax"], t_end))
+    print("analytic reference: %s%s" % (meta["analytic"] or "none",
+                                        " (relative error to the cell average)"
+                                        if meta["analytic"] else ""))
+    head = "%4s %11s %6s" % ("cell", "x", "count")
+    for k in range(nm):
+        head += "  %-30s" % ("M%d mean ± ci95 (rel.err)" % k)
+    print(head)
+    for i, x in enumerate(res["x"]):
+        line = "%4d %11.5g %6d" % (i, x, res["count"][i, 0])
+        for k in range(nm):
+            r = res["rel"][i, k]
+            rs = "(%+.2f%%)" % (100 * r) if np.isfinite(r) else ""
+            line += "  %-30s" % ("%.4e ± %.1e %s" % (res["mean"][i, k], res["ci"][i, k], rs))
+        print(line)
