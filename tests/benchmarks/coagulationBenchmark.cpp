@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 // Throughput of the cell algorithms: events (accepted + fictitious coagulations) per second
 // for N computational particles in one cell, single thread.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 // ductReference: the constant-kernel duct of Patterson & Wagner (section 3.1) with the core's
 // cell algorithms and exact one-dimensional advection, without OpenFOAM.
 //

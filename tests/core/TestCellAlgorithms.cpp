@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 // Ensemble tests of SWA, DSA1 and DSA2 against exact solutions of the Smoluchowski equation.
 #include "TestHelpers.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 #ifndef COAGULATION_TESTS_TESTHELPERS_HPP
 #define COAGULATION_TESTS_TESTHELPERS_HPP
 

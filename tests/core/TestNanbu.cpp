@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 // Nanbu-type method (Kolodko-Sabelfeld-Wagner §2.1) and its finite-difference limit.
 #include "TestHelpers.hpp"
 

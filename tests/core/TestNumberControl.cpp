@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 // Number control (halving with weight doubling / volume halving, DSA doubling) must not bias
 // the moments: controlled and uncontrolled ensemble means agree within their uncertainties.
 #include "TestHelpers.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 // Bad parameters throw std::invalid_argument with a message naming the problem.
 #include "TestHelpers.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 // The deterministic ODE reference (Dormand-Prince on the truncated discrete system) against
 // exact solutions, and the exact solutions against their own moment formulas.
 #include "TestHelpers.hpp"

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 # Shared set-up of the Python tools' self-tests (bash, sourced): PASS/FAIL counters, the
 # interpreter check and a temporary folder removed on exit.
 #   . selfTestLib.sh NAME      then ok/ko "message" ...; finish

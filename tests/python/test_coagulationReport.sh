@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 # Self-test of applications/utilities/coagulationReport (coagulationReport.py and the package
 # src/python/coagulationPost it runs on; unit tests of the package: tests/python/test_*.py).
 #

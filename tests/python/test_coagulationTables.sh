@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 # Self-test of applications/utilities/coagulationTables (coagulationTables.py).
 #
 # Builds synthetic ensembles ("rows": folders of realisation_* runs, each with one HDF5 sample

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 # compareBuilds.sh REF NEW [WORK]: the same short runs with two built checkouts of
 # coagulationFoam (each with its etc/bashrc, platforms/ and its own tutorials), compared byte
 # for byte.
