@@ -64,6 +64,21 @@ private:
     //- The common weight of a DSA population (checked), or the inception weight
     double commonWeight(const std::vector<Particle>& P) const;
 
+    static std::string who() { return std::string("coag::") + Jump::name + "::advance"; }
+
+    //- dt >= 0 and a positive volume, else std::invalid_argument
+    static void checkArguments(const CellPopulation& pop, double dt);
+
+    //- Room for the particles and the inceptions expected over dt (mean + 5 sd + 16)
+    std::size_t expectedCapacity(const CellPopulation& pop, double dt) const;
+
+    //- A finite rate, and not more than maxExpectedEvents in the rest of the step
+    static void checkRate(double totalRate, double remaining, const CellPopulation& pop);
+
+    //- The K/Khat acceptance of a proposed pair; a K above its majorant throws
+    bool accepted(const ParticleType& z1, const ParticleType& z2, const CoagulationKernel& kernel,
+                  Rng& rng);
+
     Jump jump_;
     InceptionModel inception_;
     NumberControl control_;
@@ -75,38 +90,92 @@ double JumpProcess<Jump>::commonWeight(const std::vector<Particle>& P) const
 {
     if (P.empty()) return inception_.weight;
     const double w = P.front().weight;
-    const std::string who = std::string("coag::") + Jump::name + "::advance: ";
     if (!(w > 0.0) || !std::isfinite(w)) {
-        throw std::invalid_argument(who + "particle weights must be finite and > 0");
+        throw std::invalid_argument(who() + ": particle weights must be finite and > 0");
     }
     for (const Particle& p : P) {
         if (p.weight != w) {
-            throw std::invalid_argument(who + "DSA requires all particle weights to be equal");
+            throw std::invalid_argument(who() + ": DSA requires all particle weights to be equal");
         }
     }
     if (inception_.rate > 0.0 && w != inception_.weight) {
-        throw std::invalid_argument(who + "DSA with inception requires the particle weights to "
-                                          "equal the inception weight");
+        throw std::invalid_argument(who() + ": DSA with inception requires the particle weights "
+                                            "to equal the inception weight");
     }
     return w;
+}
+
+template <class Jump>
+void JumpProcess<Jump>::checkArguments(const CellPopulation& pop, double dt)
+{
+    if (!(dt >= 0.0) || !std::isfinite(dt)) {
+        std::ostringstream os;
+        os << who() << ": dt must be finite and >= 0, got " << dt;
+        throw std::invalid_argument(os.str());
+    }
+    if (!(pop.volume > 0.0) || !std::isfinite(pop.volume)) {
+        std::ostringstream os;
+        os << who() << ": cell volume must be finite and > 0, got " << pop.volume;
+        throw std::invalid_argument(os.str());
+    }
+}
+
+template <class Jump>
+std::size_t JumpProcess<Jump>::expectedCapacity(const CellPopulation& pop, double dt) const
+{
+    const std::size_t n = pop.particles.size();
+    const double expected = inception_.rate / inception_.weight * pop.volume * dt;
+    if (!(expected > 0.0)) return n;
+    double extra = expected + 5.0 * std::sqrt(expected) + 16.0;
+    extra = std::min(extra, 16777216.0);
+    std::size_t capacity = n + static_cast<std::size_t>(extra);
+    if (control_.maxParticles > 0) {
+        capacity = std::min(capacity, std::max(n, control_.maxParticles + 1));
+    }
+    return capacity;
+}
+
+template <class Jump>
+void JumpProcess<Jump>::checkRate(double totalRate, double remaining, const CellPopulation& pop)
+{
+    if (!std::isfinite(totalRate)) {
+        throw std::runtime_error(who() + ": total event rate is not finite (gelation?)");
+    }
+    if (totalRate * remaining > maxExpectedEvents) {
+        std::ostringstream os;
+        os << who() << ": " << totalRate * remaining
+           << " events expected in the rest of the step (limit " << maxExpectedEvents << ", "
+           << pop.particles.size() << " particles, volume " << pop.volume
+           << "): the kernel or inception rate is far too large for the step, or the "
+              "population is past gelation";
+        throw std::runtime_error(os.str());
+    }
+}
+
+template <class Jump>
+bool JumpProcess<Jump>::accepted(const ParticleType& z1, const ParticleType& z2,
+                                 const CoagulationKernel& kernel, Rng& rng)
+{
+    const double majorant = sampler_.majorant(z1, z2);
+    const double K = kernel(z1, z2);
+    if (K < majorant) return rng.uniform() * majorant < K;
+    if (K <= majorant * (1.0 + 1e-9)) return true;
+    std::ostringstream os;
+    os << who() << ": kernel '" << kernel.name() << "' value " << K << " exceeds its majorant "
+       << majorant << " at masses " << z1.mass << ", " << z2.mass;
+    if (!std::isfinite(K) || !std::isfinite(majorant)) {
+        os << " (non-finite values: has the system gelled?)";
+        throw std::runtime_error(os.str());
+    }
+    throw std::logic_error(os.str());
 }
 
 template <class Jump>
 void JumpProcess<Jump>::advance(CellPopulation& pop, const CoagulationKernel& kernel, double dt,
                                 Rng& rng, StepStatistics& stats)
 {
-    const std::string who = std::string("coag::") + Jump::name + "::advance";
-    if (!(dt >= 0.0) || !std::isfinite(dt)) {
-        std::ostringstream os;
-        os << who << ": dt must be finite and >= 0, got " << dt;
-        throw std::invalid_argument(os.str());
-    }
-    if (!(pop.volume > 0.0) || !std::isfinite(pop.volume)) {
-        std::ostringstream os;
-        os << who << ": cell volume must be finite and > 0, got " << pop.volume;
-        throw std::invalid_argument(os.str());
-    }
-    if (&kernel != &sampler_.kernel()) sampler_.configure(kernel, who);
+    checkArguments(pop, dt);
+    if (&kernel != &sampler_.kernel()) sampler_.configure(kernel, who());
     std::vector<Particle>& P = pop.particles;
     const double w = Jump::equalWeights ? commonWeight(P) : 0.0;
 
@@ -118,53 +187,29 @@ void JumpProcess<Jump>::advance(CellPopulation& pop, const CoagulationKernel& ke
         while (!P.empty() && P.size() < control_.minParticles) duplicatePopulation(pop, stats);
     }
 
-    // Reserve for the expected number of inceptions so that no event allocates.
-    const double inceptionPerVolume = inception_.rate / inception_.weight;
-    std::size_t capacity = P.size();
-    {
-        const double expected = inceptionPerVolume * pop.volume * dt;
-        if (expected > 0.0) {
-            double extra = expected + 5.0 * std::sqrt(expected) + 16.0;
-            extra = std::min(extra, 16777216.0);
-            capacity += static_cast<std::size_t>(extra);
-            if (control_.maxParticles > 0) {
-                capacity = std::min(capacity, std::max(P.size(), control_.maxParticles + 1));
-            }
-        }
-    }
+    // Room for the expected inceptions, so that no event allocates.
+    const std::size_t capacity = expectedCapacity(pop, dt);
     P.reserve(capacity);
     sampler_.build(P, capacity);
 
     // Pair rates summed over ordered pairs: SWA K w2 / V (eq 22; w2 inside the sampler's
     // second factors), DSA K w / (2V) (each unordered pair at K w / V, eqs 12, 16-17).
     const double pairFactor = Jump::equalWeights ? 0.5 * w : 1.0;
+    const double inceptionPerVolume = inception_.rate / inception_.weight;
     double t = 0.0;
 
     for (;;) {
         const std::size_t n = P.size();
-        const double V = pop.volume;
-        const double inceptionRate = inceptionPerVolume * V;  // eq 10 (DSA), eq 20 (SWA)
-        const double scale = pairFactor / V;
-        const double coagulationRate = sampler_.rateSum(n) * scale;
-        const double totalRate = inceptionRate + coagulationRate;
+        const double inceptionRate = inceptionPerVolume * pop.volume;  // eq 10 (DSA), eq 20 (SWA)
+        const double scale = pairFactor / pop.volume;
+        const double totalRate = inceptionRate + sampler_.rateSum(n) * scale;
         if (!(totalRate > 0.0)) break;
-        if (!std::isfinite(totalRate)) {
-            throw std::runtime_error(who + ": total event rate is not finite (gelation?)");
-        }
-        if (totalRate * (dt - t) > maxExpectedEvents) {
-            std::ostringstream os;
-            os << who << ": " << totalRate * (dt - t)
-               << " events expected in the rest of the step (limit " << maxExpectedEvents
-               << ", " << n << " particles, volume " << V
-               << "): the kernel or inception rate is far too large for the step, or the "
-                  "population is past gelation";
-            throw std::runtime_error(os.str());
-        }
+        checkRate(totalRate, dt - t, pop);
         // Exact waiting time of the jump process (Gillespie), rates fixed until the next jump
         t += rng.exponential(totalRate);
         if (!(t <= dt)) break;
 
-        double u = rng.uniform() * totalRate;
+        const double u = rng.uniform() * totalRate;
         if (u < inceptionRate) {
             // ---- inception: (x, z, w_incep), eq 9 (DSA, w = 1 there) / eq 19 (SWA)
             P.push_back(Particle{inception_.type, inception_.weight, -1});
@@ -177,38 +222,17 @@ void JumpProcess<Jump>::advance(CellPopulation& pop, const CoagulationKernel& ke
             continue;
         }
 
-        // ---- coagulation proposal from the majorant
+        // ---- coagulation: a pair from the majorant, accepted with probability K/Khat
+        //      (j1 == j2 and rejections are fictitious jumps)
         std::size_t j1 = 0;
         std::size_t j2 = 0;
         sampler_.propose((u - inceptionRate) / scale, n, rng, P.data(), j1, j2);
-        if (j1 == j2 || j1 >= n || j2 >= n) {
+        if (j1 == j2 || j1 >= n || j2 >= n || !accepted(P[j1].type, P[j2].type, kernel, rng)) {
             ++stats.fictitious;
             continue;
         }
-
-        // Acceptance K/Khat (a rejection is a fictitious jump)
-        const double majorant = sampler_.majorant(P[j1].type, P[j2].type);
-        const double K = kernel(P[j1].type, P[j2].type);
-        if (K < majorant) {
-            if (!(rng.uniform() * majorant < K)) {
-                ++stats.fictitious;
-                continue;
-            }
-        } else if (!(K <= majorant * (1.0 + 1e-9))) {
-            std::ostringstream os;
-            os << who << ": kernel '" << kernel.name() << "' value " << K
-               << " exceeds its majorant " << majorant << " at masses " << P[j1].type.mass
-               << ", " << P[j2].type.mass;
-            if (!std::isfinite(K) || !std::isfinite(majorant)) {
-                os << " (non-finite values: has the system gelled?)";
-                throw std::runtime_error(os.str());
-            }
-            throw std::logic_error(os.str());
-        }
-
-        // ---- accepted coagulation: the algorithm's jump
         ++stats.coagulations;
-        jump_.coagulate(pop, j1, j2, rng, sampler_);
+        jump_.coagulate(pop, j1, j2, rng, sampler_);  // the algorithm's jump
         if (closedControl()) {
             while (!P.empty() && P.size() < control_.minParticles) duplicate(pop, stats);
         }
