@@ -74,7 +74,7 @@ Foam::coagulationCloud::coagulationCloud
         )
     ),
     algorithmName_(properties_.get<word>("algorithm")),
-    splitting_(splittingScheme::Lie),
+    splitting_(splittingScheme::Strang),
     scaling_
     (
         properties_.subDict("statisticalWeight"), algorithmName_, mesh_
@@ -109,7 +109,7 @@ Foam::coagulationCloud::coagulationCloud
     const word scheme =
         properties_.getOrDefault<word>
         (
-            "splitting", splittingSchemeNames[splittingScheme::Lie]
+            "splitting", splittingSchemeNames[splittingScheme::Strang]
         );
     if (!splittingSchemeNames.found(scheme))
     {
