@@ -16,11 +16,13 @@
 #      seeds per scheme and dt, n = 4096, t = 4: dt = 6e-4, 1.2e-3, 2.4e-3 (dx/h = 20/3,
 #      10/3, 5/3, along which the Strang staircase error of M1 scales cleanly): M1 against
 #      eq 41 and against each scheme's exact expectation; intervals over the seeds.
+#   F  as D with coagulation (the paper's K0 = 1e-5), n = 1024, R = 16 seeds: M0, M2, M3
+#      against eqs 39, 43, 45 in cell 0 and at the outlet
 #   E  cost at equal accuracy: the additive-kernel duct (tutorial, one seed) with Lie at the
 #      largest dt whose outlet M1 bias u dt/(2x) is 0.1 % (2e-4) and Strang at dt = 1.2e-3
 #      and 2e-3 (Courant 0.6 and 1), whose expected outlet M1 error is 0
 # Every run's wall time is kept for the accuracy/cost table. quick: shorter runs, R = 2.
-# Full: about 35 min on one core of the 2-core VM.
+# Full: about 45 min on one core of the 2-core VM.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 . "$here/../../etc/bashrc"
@@ -79,6 +81,17 @@ for scheme in Lie Strang; do
             [ -s "$f" ] && continue
             "$ductReference" SWA 4096 $((1000 + r)) 4.0 --dt $dt --splitting $scheme \
                 --K0 1e-30 --sample 4.8e-3 --cells > "$f.tmp" && mv "$f.tmp" "$f"
+        done
+    done
+done
+RF=16; [ "$quick" = quick ] && RF=2
+for scheme in Lie Strang; do
+    for dt in 6e-4 1.2e-3 2.4e-3; do
+        for ((r = 1; r <= RF; r++)); do
+            f="$out/F_${scheme}_${dt}_r$r.txt"
+            [ -s "$f" ] && continue
+            "$ductReference" SWA 1024 $((2000 + r)) 4.0 --dt $dt --splitting $scheme \
+                --sample 4.8e-3 --cells > "$f.tmp" && mv "$f.tmp" "$f"
         done
     done
 done
