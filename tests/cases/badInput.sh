@@ -28,7 +28,10 @@ expectFatal()
 
 expectFatal missingAlgorithm   "algorithm"        -entry algorithm -remove
 expectFatal unknownAlgorithm   "DSA3"             -entry algorithm -set DSA3
-expectFatal unknownSplitting   "Strange"          -entry splitting -add Strange
+expectFatal unknownSplitting   "Strange"          -entry splitting -set Strange
+expectFatal stickNoWall        "matches no wall"  -entry patchInteraction -add "{ patches { sides stick; } }"
+expectFatal interactionTypo   "patchs"           -entry patchInteraction -add "{ patchs { sides stick; } }"
+expectFatal unknownInteraction "StandardWall"    -entry patchInteraction -add "{ type StandardWall; patches { } }"
 expectFatal missingKernel      "kernel"           -entry kernel -remove
 expectFatal unknownKernel      "quadratic"        -entry kernel/type -set quadratic
 expectFatal missingK0          "K0"               -entry kernel/K0 -remove

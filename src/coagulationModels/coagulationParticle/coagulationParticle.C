@@ -86,6 +86,15 @@ bool Foam::coagulationParticle::hitPatch
         return true;
     }
 
+    // A wall set to stick (patchInteractionModel): the particle deposits,
+    // booked on that wall like an outflow
+    if (isA<wallPolyPatch>(pp) && td.sticks(patch()))
+    {
+        td.bookOutflow(patch(), *this);
+        td.keepParticle = false;
+        return true;
+    }
+
     // Rebound: mirror the rest of the move in the face (an empty patch is
     // reached only by round-off, the displacement being constrained)
     if

@@ -8,6 +8,9 @@
 #include "massBalance.H"
 #include "coagulationCloud.H"
 #include "addToRunTimeSelectionTable.H"
+#include "processorPolyPatch.H"
+#include "OFstream.H"
+#include "OSspecific.H"
 
 namespace Foam
 {
@@ -27,6 +30,7 @@ Foam::cloudFunctions::massBalance::massBalance(coagulationCloud& cloud)
     initial_(),
     inflow_(),
     outflow_(),
+    patches_(cloud.pMesh().boundaryMesh().size()),
     stalled_(0)
 {
     initial_ = domain();
@@ -73,6 +77,9 @@ void Foam::cloudFunctions::massBalance::postMove
         outflow_.particles += out.particles[patchi];
         outflow_.number += out.number[patchi];
         outflow_.mass += out.mass[patchi];
+        patches_[patchi].particles += out.particles[patchi];
+        patches_[patchi].number += out.number[patchi];
+        patches_[patchi].mass += out.mass[patchi];
     }
     stalled_ += out.stalled;
 }
@@ -123,6 +130,52 @@ void Foam::cloudFunctions::massBalance::check() const
 }
 
 
+void Foam::cloudFunctions::massBalance::writePatches() const
+{
+    // Per patch since the start of this run: the log, and one row per patch
+    // and write time in postProcessing/coagulationBalance/patches.csv
+    const polyBoundaryMesh& boundary = cloud_.pMesh().boundaryMesh();
+    const boolList& stick = cloud_.patchInteraction().stick();
+    const Time& time = cloud_.mesh().time();
+    autoPtr<OFstream> csv;
+    if (Pstream::master())
+    {
+        const fileName dir(time.globalPath()/"postProcessing"/"coagulationBalance");
+        mkDir(dir);
+        const fileName file(dir/"patches.csv");
+        const bool fresh = !isFile(file);
+        csv.reset(new OFstream(file, IOstream::ASCII, IOstream::currentVersion,
+                               IOstream::UNCOMPRESSED, true));
+        if (fresh)
+        {
+            csv() << "time,patch,kind,particles,number,mass" << nl;
+        }
+    }
+    forAll(boundary, patchi)
+    {
+        particleBalance b(patches_[patchi]);
+        reduce(b.particles, sumOp<label>());
+        reduce(b.number, sumOp<scalar>());
+        reduce(b.mass, sumOp<scalar>());
+        if (isA<processorPolyPatch>(boundary[patchi]) || b.particles == 0)
+        {
+            continue;
+        }
+        const word kind(stick[patchi] ? "deposited" : "outflow");
+        Info<< "    " << kind << " " << boundary[patchi].name() << ": "
+            << b.particles << " particles, number " << b.number
+            << ", mass " << b.mass << nl;
+        if (csv)
+        {
+            csv() << time.timeName() << ',' << boundary[patchi].name() << ','
+                << kind << ',' << b.particles << ',' << b.number << ','
+                << b.mass << nl;
+        }
+    }
+    Info<< endl;
+}
+
+
 void Foam::cloudFunctions::massBalance::write()
 {
     particleBalance inflow(inflow_), incepted(this->incepted());
@@ -159,6 +212,7 @@ void Foam::cloudFunctions::massBalance::write()
         << "    particle balance error     = " << particleError() << nl
         << "    particles held at a face   = " << stalled << endl;
 
+    writePatches();
     check();
 }
 

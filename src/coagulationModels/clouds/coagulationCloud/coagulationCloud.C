@@ -89,6 +89,7 @@ Foam::coagulationCloud::coagulationCloud
     cellStepper_(),
     transport_(),
     injection_(),
+    patchInteraction_(),
     events_(),
     removedInCells_(0),
     functions_(),
@@ -102,7 +103,7 @@ Foam::coagulationCloud::coagulationCloud
         {
             "algorithm", "kernel", "inception", "inflow", "transport",
             "statisticalWeight", "seed", "sampling", "numberControl",
-            "splitting"
+            "splitting", "patchInteraction"
         }
     );
 
@@ -175,6 +176,13 @@ Foam::coagulationCloud::coagulationCloud
     {
         injection_ = injectionModel::New(properties_.subDict("inflow"), *this);
     }
+    patchInteraction_ =
+        properties_.found("patchInteraction")
+      ? patchInteractionModel::New
+        (
+            properties_.subDict("patchInteraction"), mesh_
+        )
+      : autoPtr<patchInteractionModel>(new patchInteractionModel(mesh_));
 
     // Particles of the start time, if any: of a completely written time of
     // this mesh, each in a cell with a finite positive mass and weight

@@ -89,7 +89,8 @@ void Foam::transportModels::frozenFlow::moveOnThreads
         List<scalar> outMass(nPatches, Zero);
         coagulationParticle::trackingData threadTd
         (
-            cloud_, U, outParticles, outNumber, outMass
+            cloud_, U, outParticles, outNumber, outMass,
+            cloud_.patchInteraction().stick()
         );
 
         #pragma omp for schedule(dynamic, 4096)
@@ -147,7 +148,8 @@ void Foam::transportModels::frozenFlow::move
 {
     coagulationParticle::trackingData td
     (
-        cloud_, U, out.particles, out.number, out.mass
+        cloud_, U, out.particles, out.number, out.mass,
+        cloud_.patchInteraction().stick()
     );
     cloud_.index().invalidateSort();
     if (!cloudMove && !Pstream::parRun())
