@@ -12,8 +12,9 @@ Successive samples of a run are correlated (over up to the residence time
 upstream of the cell), so ci is not the paper's 1.96 sd / sqrt(count) (kept as
 ciIid):
   one run (R = 1): statistics.correlated_interval of the run's ordered time
-      series: integrated autocorrelation time tau_int (Sokal's window), effective
-      sample size n_eff and t_{0.975, n_eff-1} sqrt(var(mean));
+      series: integrated autocorrelation time tau_int (Sokal's window, widened to
+      the residence time upstream of the cell where that gives a larger tau_int),
+      effective sample size n_eff and t_{0.975, nu} sqrt(var(mean));
   R >= 2 realisations: t_{0.975, R-1} sd(realisation means) / sqrt(R)
       (statistics.standard_error_from_realisations), which needs no model of the
       time correlation; neff is then the sum of the runs' n_eff and tauInt the
@@ -33,12 +34,36 @@ EQ_LABELS = {"constantDuct": ("eq. 39", "eq. 41", "eq. 43", "eq. 45"),
              "additiveDuct": ("moment ODE", "eq. 50", "moment ODE", "moment ODE")}
 
 
-def compute(cases, t_relax=None, t_end=None, u=None, x_inlet=0.0, analytic_kind="auto"):
+def _min_window(ref, x, u, x_inlet, correlation_time):
+    """Smallest autocorrelation window (samples) of each cell: correlation_time
+    seconds / sampleInterval; correlation_time None: the residence time upstream of
+    the cell, (x - x_inlet)/u (u: the option, else the attribute u, else 1)."""
+    try:
+        dt = float(ref.get("sampleInterval", 0) or 0)
+    except (TypeError, ValueError):
+        dt = 0.0
+    if dt <= 0 or correlation_time == 0:
+        return 0
+    if correlation_time is None:
+        try:
+            uu = float(u if u is not None else ref.get("u", 1.0))
+        except (TypeError, ValueError):
+            uu = 1.0
+        t = np.maximum(x - x_inlet, 0.0) / abs(uu) if uu else np.zeros_like(x)
+    else:
+        t = np.full(len(x), float(correlation_time))
+    return np.ceil(t / dt - 1e-9).astype(int)[:, None]
+
+
+def compute(cases, t_relax=None, t_end=None, u=None, x_inlet=0.0, analytic_kind="auto",
+            correlation_time=None):
     """Statistics of the runs in `cases` (case directories, pooled).
 
     t_relax None: the files' tRelax; t_end None: all samples; u None: attribute u,
     else 1.0; analytic_kind "auto" (from the kernel attribute), "none" or one of
-    analytic.KINDS.  Returns a dict of per-cell arrays [cells][moments] (count,
+    analytic.KINDS; correlation_time: the smallest window of the autocorrelation sum
+    in seconds (None: the residence time upstream of each cell, 0: Sokal's alone).
+    Returns a dict of per-cell arrays [cells][moments] (count,
     mean, sd, var, ci, analytic, analyticCentre, rel, nsd), x, centres, the cell
     edges and meta (run attributes, realisations, the reference used)."""
     reader, acc, runs, per_run = samples.RunReader(), None, [], []
@@ -49,7 +74,9 @@ def compute(cases, t_relax=None, t_end=None, u=None, x_inlet=0.0, analytic_kind=
         acc.add(ids, data)
         runs.append(info)
         # the run's ordered time series: its own mean, n_eff, interval and tau_int
-        per_run.append((ids, statistics.correlated_interval_masked(data)))
+        xs = np.array(reader.cells.centres)[ids, 0] if len(ids) else np.zeros(0)
+        per_run.append((ids, statistics.correlated_interval_masked(
+            data, min_window=_min_window(reader.ref, xs, u, x_inlet, correlation_time))))
     ref = reader.ref
     centres = np.array(reader.cells.centres)
     order = np.lexsort((centres[:, 2], centres[:, 1], centres[:, 0]))
@@ -70,6 +97,9 @@ def compute(cases, t_relax=None, t_end=None, u=None, x_inlet=0.0, analytic_kind=
         interval = ("one run: t_{0.975, n_eff-1} sqrt(var(mean)), n_eff = effective sample "
                     "size from the integrated autocorrelation time (Sokal window c = %g)"
                     % statistics.SOKAL_C)
+        interval += "; window at least %s" % (
+            "the residence time (x - xInlet)/u" if correlation_time is None
+            else "%g s" % correlation_time)
     else:
         _, ci = statistics.standard_error_from_realisations(np.array([a[0] for a in run_arrays]))
         neff = np.sum([a[1] for a in run_arrays], axis=0)

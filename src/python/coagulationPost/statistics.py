@@ -144,12 +144,12 @@ def standard_error_of_sd(realisation_sds, sd, count):
 
 SOKAL_C = 5.0        # window constant: the sum of the autocorrelations stops at the
                      # first lag M >= SOKAL_C tau(M) (Sokal 1997, section 3)
-MIN_BATCHES = 2.0    # the interval is NaN (unknown) where n_eff < MIN_BATCHES
 
 
-def _windowed(x, c):
+def _windowed(x, c, min_window=0):
     """Sokal's windowed autocorrelation sum of each column of x [N][cols]:
-    (tau(M), M, gamma0, constant) with tau(M) = 1/2 + sum_{t=1}^{M} rho(t)."""
+    (tau(M), M, gamma0, constant) with tau(M) = 1/2 + sum_{t=1}^{M} rho(t); the window
+    is at least min_window (scalar or per column) and at most N/4."""
     N = x.shape[0]
     d = x - x.mean(axis=0)
     nfft = 1 << int(2 * N - 1).bit_length()
@@ -161,17 +161,28 @@ def _windowed(x, c):
         rho = acov / np.where(const, 1.0, g0)
     taus = 0.5 + np.cumsum(rho[1:], axis=0)          # tau(M), M = 1..N-1
     lags = np.arange(1, N)[:, None]
+    Mmax = max(N // 4, 1)
     ok = lags >= c * taus
-    ok[N // 2:] = False                                # the window leaves half the series
+    ok[Mmax:] = False
     found = ok.any(axis=0)
-    M = np.where(found, np.argmax(ok, axis=0) + 1, N // 2)
-    tau = np.where(found, taus[M - 1 if N > 1 else 0, np.arange(taus.shape[1])], N / 4.0)
-    tau = np.where(const, 0.5, np.maximum(tau, 0.5))
+    M = np.where(found, np.argmax(ok, axis=0) + 1, Mmax)
+    cols = np.arange(taus.shape[1])
+    tau = taus[M - 1, cols]
+    # min_window: the longer window where it gives the larger tau (a tail beyond
+    # Sokal's window), never a smaller one (its noise could make tau near 0)
+    Mw = np.minimum(np.maximum(M, np.broadcast_to(np.asarray(min_window, dtype=int), M.shape)),
+                    Mmax)
+    Nf = float(N)
+    tau_w = taus[Mw - 1, cols]
+    longer = tau_w / (Nf - 2 * Mw - 1) > tau / (Nf - 2 * M - 1)
+    M = np.where(longer, Mw, M)
+    tau = np.where(longer, tau_w, tau)
+    tau = np.where(const, 0.5, tau)
     M = np.where(const, 0, M)
-    return tau, M, g0, const
+    return tau, M, g0, const, found
 
 
-def autocorrelation_time(series, c=SOKAL_C):
+def autocorrelation_time(series, c=SOKAL_C, min_window=0):
     """Integrated autocorrelation time tau_int of each column of series [N][...]
     (NaN-free, ordered in time, equally spaced), in sample units:
 
@@ -180,22 +191,24 @@ def autocorrelation_time(series, c=SOKAL_C):
     rho the sample autocorrelation (FFT, mean subtracted, 1/N normalisation) and M
     Sokal's automatic window, the smallest lag with M >= c tau_int(M) (c = 5; Sokal,
     "Monte Carlo methods in statistical mechanics: foundations and new algorithms",
-    1997, section 3; also emcee's autocorr).  tau_int = 1/2 for independent
-    samples; for an AR(1) series with coefficient phi, tau_int = (1+phi)/(2(1-phi)).
+    1997, section 3; also emcee's autocorr), but at least min_window lags (the
+    correlation time known from elsewhere, e.g. a residence time) and at most N/4.
+    tau_int = 1/2 for independent samples; for an AR(1) series with coefficient phi,
+    tau_int = (1+phi)/(2(1-phi)).
 
     This is the plain estimate, biased low on short series (the mean subtraction
-    lowers every rho(t) by about 2 tau/N); correlated_interval corrects the
-    variance of the mean for it.  Where no lag M <= N/2 satisfies the window
-    condition the series is too short to see its correlation and tau_int = N/4
-    (n_eff = 2) is returned.  Constant columns get 1/2.  Shape series.shape[1:]."""
+    lowers every rho(t) by about 2 tau/N), and blind to a weak tail of rho beyond
+    Sokal's window; correlated_interval corrects the first and min_window guards
+    against the second.  Constant columns get 1/2.  Shape series.shape[1:]."""
     x = np.asarray(series, dtype=float)
     N = x.shape[0]
     if N < 4:
         return np.full(x.shape[1:], 0.5)
-    return _windowed(x.reshape(N, -1), c)[0].reshape(x.shape[1:])
+    mw = np.broadcast_to(np.asarray(min_window), x.shape[1:]).reshape(-1)
+    return _windowed(x.reshape(N, -1), c, mw)[0].reshape(x.shape[1:])
 
 
-def correlated_interval(series, c=SOKAL_C):
+def correlated_interval(series, c=SOKAL_C, min_window=0):
     """Mean, effective sample size and 95 % half-width of the mean of each column of
     one run's ordered time series [N][...] (NaN-free), allowing for the correlation
     of successive samples.  With tau_int and the window M of autocorrelation_time
@@ -203,16 +216,27 @@ def correlated_interval(series, c=SOKAL_C):
 
         var(mean) = 2 tau_int gamma0 / (N - 2M - 1)
         n_eff     = sd^2 / var(mean)      (sd^2 = m2/(N-1); = N for independent samples)
-        half-width = t_{0.975, n_eff - 1} sqrt(var(mean))   (Student t, n_eff - 1 dof)
+        nu        = N / (2M + 1)
+        half-width = t_{0.975, nu} sqrt(var(mean))        (Student t, nu dof)
 
-    2 tau_int gamma0 = sum_{|t|<=M} gamma(t) is the windowed spectral estimate of
-    N var(mean) (Sokal 1997, eq. 3.19 ff.; Geyer 1992); each sample autocovariance
-    is low by var(mean) on average (the mean is subtracted), so the sum is low by
-    the factor (N - 2M - 1)/N, which the denominator undoes (Priestley 1981, 5.3.3).
-    Without it, and with the plain N/(2 tau_int), the intervals of series of 320
-    samples with tau_int = 20 cover 85 % instead of 95 %.  n_eff < MIN_BATCHES (2),
-    or the window reaching N/2 (the run too short to see its correlation): NaN.
-    Returns (mean, n_eff, ci, tau_int)."""
+    2 tau_int gamma0 = sum_{|t|<=M} gamma(t) is the truncated-window spectral estimate
+    of N var(mean) at frequency 0 (Sokal 1997, eq. 3.19 ff.); each sample autocovariance
+    is low by var(mean) on average (the mean is subtracted), so the sum is low by the
+    factor (N - 2M - 1)/N, which the denominator undoes; nu is the equivalent degrees
+    of freedom of that estimate (Priestley, "Spectral analysis and time series", 1981,
+    section 6.2.4: nu = 2N / sum lambda(t)^2 away from frequency 0, half that at 0,
+    sum lambda^2 = 2M + 1 for the truncated window), so the t quantile allows for
+    the noise of tau_int on short series.  Series of 320 samples with tau_int = 10
+    (AR(1)) cover 89 % with N/(2 tau_int) and n_eff - 1 dof and no bias correction,
+    95 % with them (tests/python/test_correlated.py).
+
+    min_window (lags; scalar or per column): the smallest window, against a weak
+    tail of rho beyond Sokal's window, which the windowed sum cannot tell from noise
+    (coagulationPost.report passes the residence time upstream of the cell).  The
+    window is at most N/4; where Sokal's condition is not met below N/4 the series
+    is too short to see its correlation, the window is N/4 (nu ~ 2: a wide interval,
+    still low when tau_int > N/20).  Constant columns: half-width 0.  COAGULATIONPOST_IID_INTERVAL=1 (tests) sets tau_int = 1/2, M = 0: the
+    independent-sample interval with t_{N}.  Returns (mean, n_eff, ci, tau_int)."""
     x = np.asarray(series, dtype=float)
     N = x.shape[0]
     shape = x.shape[1:]
@@ -220,22 +244,24 @@ def correlated_interval(series, c=SOKAL_C):
         nan = np.full(shape, np.nan)
         return (x.mean(axis=0) if N else nan), np.full(shape, float(N)), nan, np.full(shape, 0.5)
     flat = x.reshape(N, -1)
-    tau, M, g0, const = _windowed(flat, c)
+    mw = np.broadcast_to(np.asarray(min_window), shape).reshape(-1)
+    tau, M, g0, const, found = _windowed(flat, c, mw)
     if os.environ.get("COAGULATIONPOST_IID_INTERVAL") == "1":   # tests: the correction removed
         tau, M = np.full_like(tau, 0.5), np.zeros_like(M)
     mean = flat.mean(axis=0)
     m2 = g0 * N
     from scipy.stats import t as student
     with np.errstate(invalid="ignore", divide="ignore"):
-        var_mean = 2.0 * tau * g0 / np.maximum(N - 2 * M - 1, 1)
+        var_mean = np.maximum(2.0 * tau, 1e-3) * g0 / np.maximum(N - 2 * M - 1, 1)
         sd2 = m2 / (N - 1)
         neff = np.where(const, float(N), sd2 / var_mean)
-        ci = student.ppf(0.975, np.maximum(neff - 1.0, 1.0)) * np.sqrt(var_mean)
-        ci = np.where(const, 0.0, np.where(neff >= MIN_BATCHES, ci, np.nan))
+        nu = N / (2.0 * M + 1.0)
+        ci = student.ppf(0.975, np.maximum(nu, 1.0)) * np.sqrt(var_mean)
+        ci = np.where(const, 0.0, ci)
     return (mean.reshape(shape), neff.reshape(shape), ci.reshape(shape), tau.reshape(shape))
 
 
-def correlated_interval_masked(data):
+def correlated_interval_masked(data, min_window=0):
     """correlated_interval of each column of data [N][cells][moments] with NaN for a
     missing sample: columns without NaN together, the others on their valid samples
     (gaps closed).  Returns (mean, n_eff, ci, tau) [cells][moments]; NaN / 0 where a
@@ -244,17 +270,18 @@ def correlated_interval_masked(data):
     shape = data.shape[1:]
     flat = data.reshape(data.shape[0], -1)
     full = ~np.isnan(flat).any(axis=0)
+    mw = np.broadcast_to(np.asarray(min_window), shape).reshape(-1)
     out = [np.full(flat.shape[1], np.nan) for _ in range(4)]
     out[1][:] = 0.0
     if full.any():
-        r = correlated_interval(flat[:, full])
+        r = correlated_interval(flat[:, full], min_window=mw[full])
         for o, v in zip(out, r):
             o[full] = v
     for j in np.nonzero(~full)[0]:
         col = flat[:, j]
         col = col[~np.isnan(col)]
         if col.size:
-            r = correlated_interval(col[:, None])
+            r = correlated_interval(col[:, None], min_window=mw[j:j + 1])
             for o, v in zip(out, r):
                 o[j] = v[0]
     return tuple(o.reshape(shape) for o in out)
