@@ -81,7 +81,7 @@ def report_figures(res, out, x_inlet=0.0, t_end=None, check_rel_tol=None):
     fig, panels = _moment_grid(plt, nm)
     for k, ax in panels:
         ax.errorbar(x, res["mean"][:, k], yerr=res["ci"][:, k], fmt="o", ms=3, capsize=2,
-                    color="C0", label="sample mean ± 95 % CI (%s)" % _ci_kind(meta))
+                    color="C0", label="sample mean ± 95 %% CI (%s)" % _ci_kind(meta))
         if fine is not None:
             ax.plot(fine[0], fine[1][k], "k-", lw=1, label="analytic (%s)" % EQ_LABELS[kind][k])
         _moment_panel(ax, k, r"$m_{%d}(x)$" % k)
@@ -99,7 +99,7 @@ def report_figures(res, out, x_inlet=0.0, t_end=None, check_rel_tol=None):
                                 label="95 % CI if samples were independent")
                 ax.errorbar(x, 100 * res["rel"][:, k], yerr=100 * res["ci"][:, k] / np.abs(a),
                             fmt="o", ms=3, capsize=2, color="C0",
-                            label="(mean − analytic)/analytic ± 95 % CI (%s)" % _ci_kind(meta))
+                            label="(mean − analytic)/analytic ± 95 %% CI (%s)" % _ci_kind(meta))
             ax.axhline(0.0, color="k", lw=1)
             if check_rel_tol is not None:
                 for s in (-1, 1):
