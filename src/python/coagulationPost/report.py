@@ -94,8 +94,9 @@ def compute(cases, t_relax=None, t_end=None, u=None, x_inlet=0.0, analytic_kind=
     R = len(per_run)
     if R == 1:
         _, neff, ci, tau = run_arrays[0]
-        interval = ("one run: t_{0.975, n_eff-1} sqrt(var(mean)), n_eff = effective sample "
-                    "size from the integrated autocorrelation time (Sokal window c = %g)"
+        interval = ("one run: t_{0.975, N/(2M+1)} sqrt(var(mean)), var(mean) = 2 tau_int "
+                    "gamma0/(N-2M-1), n_eff = sd^2/var(mean), tau_int the integrated "
+                    "autocorrelation time summed over M lags (Sokal window c = %g)"
                     % statistics.SOKAL_C)
         interval += "; window at least %s" % (
             "the residence time (x - xInlet)/u" if correlation_time is None
