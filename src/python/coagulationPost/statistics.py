@@ -177,7 +177,9 @@ def _windowed(x, c, min_window=0):
     longer = tau_w / (Nf - 2 * Mw - 1) > tau / (Nf - 2 * M - 1)
     M = np.where(longer, Mw, M)
     tau = np.where(longer, tau_w, tau)
-    tau = np.where(const, 0.5, tau)
+    # at least 1/2, the independent-sample value: a negative estimate of the sum (noise,
+    # or anticorrelated samples) never makes the interval narrower than the iid one
+    tau = np.where(const, 0.5, np.maximum(tau, 0.5))
     M = np.where(const, 0, M)
     return tau, M, g0, const, found
 
@@ -199,7 +201,8 @@ def autocorrelation_time(series, c=SOKAL_C, min_window=0):
     This is the plain estimate, biased low on short series (the mean subtraction
     lowers every rho(t) by about 2 tau/N), and blind to a weak tail of rho beyond
     Sokal's window; correlated_interval corrects the first and min_window guards
-    against the second.  Constant columns get 1/2.  Shape series.shape[1:]."""
+    against the second.  tau_int is at least 1/2 (a negative windowed sum, from
+    noise or anticorrelated samples, is not trusted).  Constant columns get 1/2.  Shape series.shape[1:]."""
     x = np.asarray(series, dtype=float)
     N = x.shape[0]
     if N < 4:
