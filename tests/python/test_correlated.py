@@ -65,8 +65,7 @@ def test_independent_samples_give_the_iid_interval():
 def test_coverage_on_ar1(tau, n):
     """2000 AR(1) series with mean 0: the 95 % correlated-sample intervals contain 0 for
     90..99 % of them; the independent-sample ones (1.96 sd / sqrt(N)) for under 70 %.
-    (10, 320): the series are 32 tau long, as at the constant duct's outlet; without the
-    (N - 2M - 1) bias correction the coverage there is 0.89."""
+    (10, 320): the series are 32 tau long."""
     x = ar1(np.random.default_rng(int(10 * tau + n)), phi_of(tau), n, 2000)
     mean, neff, ci, est = st.correlated_interval(x)
     cover = np.mean(np.abs(mean) <= ci)
@@ -150,3 +149,14 @@ def test_min_window_sees_a_weak_slow_tail():
     print("slow tail: coverage Sokal alone %.3f, min window 40 %.3f" % (cover0, cover1))
     assert cover0 < 0.85
     assert 0.90 <= cover1 <= 0.99
+
+
+def test_short_series_corrections():
+    """Series only 16 tau_int long (tau 20, 320 samples; 4000 of them): coverage >= 0.94
+    needs both short-series corrections: without the (N - 2M - 1) bias correction it is
+    0.928, with n_eff - 1 instead of N/(2M+1) dof 0.899 (without both about 0.84)."""
+    x = ar1(np.random.default_rng(2020), phi_of(20.0), 320, 4000)
+    mean, neff, ci, est = st.correlated_interval(x)
+    cover = np.mean(np.abs(mean) <= ci)
+    print("tau 20 N 320: coverage %.3f" % cover)
+    assert 0.94 <= cover <= 0.99
