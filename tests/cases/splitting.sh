@@ -24,7 +24,7 @@ runScheme()
     local scheme=$1 name=$2 end=$3 write=$4 n=$5
     local d; d=$(newCase constantKernelDuct "$name")
     cd "$d"
-    foamDictionary -entry splitting -add "$scheme" constant/coagulationProperties > /dev/null
+    setEntry . constant/coagulationProperties splitting "$scheme"   # the tutorial names Lie
     setEntry . constant/coagulationProperties kernel/K0 1e-30
     setEntry . constant/coagulationProperties inception/rate $rate
     setEntry . constant/coagulationProperties inflow/density $cIn
