@@ -24,7 +24,7 @@ runScheme()
     local scheme=$1 name=$2 end=$3 write=$4 n=$5
     local d; d=$(newCase constantKernelDuct "$name")
     cd "$d"
-    foamDictionary -entry splitting -add "$scheme" constant/coagulationProperties > /dev/null
+    setEntry . constant/coagulationProperties splitting "$scheme"   # the tutorial names Lie
     setEntry . constant/coagulationProperties kernel/K0 1e-30
     setEntry . constant/coagulationProperties inception/rate $rate
     setEntry . constant/coagulationProperties inflow/density $cIn
@@ -43,7 +43,9 @@ runScheme()
 
 for scheme in Lie Strang; do
     runScheme $scheme "split_$scheme" 1.44 1.44 2048
-    $report --case . --out results --no-plots --analytic none > log.report || fail "report failed"
+    # no coagulation: particles never interact, samples a cell transit apart are independent
+    $report --case . --out results --no-plots --analytic none --correlation-time 0 > log.report \
+        || fail "report failed"
 done
 
 "$COAGULATIONFOAM_PYTHON" - "$workDir" $dt $rate $cIn <<'PY' || fail "a scheme's moments are off its exact expectation"

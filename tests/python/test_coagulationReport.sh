@@ -158,8 +158,16 @@ if not (np.all(cnt[:25] == 521) and np.all(cnt[25:] == 321)):
     bad.append("sample counts %s" % np.unique(cnt))
 for k in range(4):
     mean, ci, a = full["M%d_mean" % k], full["M%d_ci95" % k], full["M%d_analytic" % k]
-    r = ci / (1.96 * 0.01 * a / np.sqrt(cnt))
-    if np.any(np.abs(r - 1) > 0.25): bad.append("M%d ci95 off: %s" % (k, r))
+    r = full["M%d_ci95_iid" % k] / (1.96 * 0.01 * a / np.sqrt(cnt))
+    if np.any(np.abs(r - 1) > 0.25): bad.append("M%d ci95_iid off: %s" % (k, r))
+    # independent samples: the correlated-sample interval is about the iid one, a little
+    # wider (its window at least the residence time x/u, up to 40 samples at the outlet,
+    # is taken where it gives the larger tau_int, and t has N/(2M+1) dof), n_eff ~ count
+    r = ci / full["M%d_ci95_iid" % k]
+    if np.any(r < 0.8) or np.any(r > 3.0) or not 1.0 <= np.median(r) <= 1.35:
+        bad.append("M%d ci95 / ci95_iid %s" % (k, r))
+    if abs(np.median(full["M%d_neff" % k] / cnt) - 1) > 0.25:
+        bad.append("M%d n_eff / count %s" % (k, full["M%d_neff" % k] / cnt))
     nsd = full["M%d_normStdDev" % k]          # sqrt(256) * 0.01 = 0.16
     if np.any(np.abs(nsd / 0.16 - 1) > 0.25): bad.append("M%d normalised sd %s" % (k, nsd))
     z = (mean - a) / (ci / 1.96)
@@ -213,7 +221,8 @@ sys.exit(0 if np.all(c == 242) and s['realisations'] == 2 else 1)" \
 
 # pooled statistics = those of all in-window samples put together (numpy, computed here from
 # the files): realisations with different means (scale 1.2), so that the spread between them
-# counts; mean, sample sd (N - 1), count and 1.96 sd/sqrt(N) to round-off
+# counts; mean, sample sd (N - 1), count and ci95_iid = 1.96 sd/sqrt(N) to round-off, and
+# ci95 from the two realisation means (Student t, 1 dof)
 mk "$TMP/r3" single --seed 23 --scale 1.2 || ko "generator (realisation r3)"
 run_expect "pooled realisations of different means" 0 "$TMP/pool3.log" -- \
     "$PY" "$REPORT" --no-plots --analytic none --out "$TMP/pooled3" --realisations "$TMP/r1" "$TMP/r3"
@@ -233,13 +242,16 @@ bad = []
 for k in range(4):
     d = allm[:, :, k]
     want = {"mean": d.mean(axis=0), "sd": d.std(axis=0, ddof=1), "count": np.full(d.shape[1], len(d)),
-            "ci95": 1.96 * d.std(axis=0, ddof=1) / np.sqrt(len(d))}
+            "ci95_iid": 1.96 * d.std(axis=0, ddof=1) / np.sqrt(len(d)),
+            # two realisations: t_{0.975, 1} sd(realisation means) / sqrt(2)
+            "ci95": 12.706204736174698 * np.abs(parts[0][:, :, k].mean(axis=0)
+                                                - parts[1][:, :, k].mean(axis=0)) / 2}
     for key, v in want.items():
         got = res["M%d_%s" % (k, key)]
         err = np.max(np.abs(got / v - 1))
         if not err < 1e-9:
             bad.append("M%d_%s off by %.3g (relative)" % (k, key, err))
-print("\n".join(bad) if bad else "pooled mean, sd, count and ci95 of %d samples exact" % len(allm))
+print("\n".join(bad) if bad else "pooled mean, sd, count, ci95_iid of %d samples and ci95 of 2 realisations exact" % len(allm))
 sys.exit(1 if bad else 0)
 EOF
 then ok "pooled mean, sd (N-1), count, ci95 equal those of the samples put together"

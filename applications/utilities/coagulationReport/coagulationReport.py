@@ -7,7 +7,7 @@ Reads the HDF5 moment samples written by the solver,
 files of processors and restarts by cell centre and time, and reports for every
 cell and moment k, over the samples with t_relax <= t <= t_end (pooled over the
 realisations given with --realisations), the sample mean, sd, count, 95 %
-half-width 1.96 sd / sqrt(count) and the normalised sd sqrt(n var(M_k)) / m_k,
+half-width of the mean and the normalised sd sqrt(n var(M_k)) / m_k,
 against the analytic duct reference of the kernel (Patterson & Wagner eqs 39-45,
 50).  A thin command line over the package coagulationPost in
 <repo>/src/python (samples, statistics, analytic, report, plots, checks), whose
@@ -17,7 +17,14 @@ Outputs in --out (resolved against --case when relative):
   moments.csv        x, Mk_mean, Mk_ci95 for k = 0..3
   moments_full.csv   x, y, z, and per k: mean, sd, count, ci95, analytic cell
                      average, analytic value at the centre, relative error,
-                     normalised standard deviation
+                     normalised standard deviation, neff (effective sample size),
+                     tauInt (integrated autocorrelation time, samples), ci95_iid
+                     (1.96 sd / sqrt(count), as if the samples were independent)
+
+The 95 % half-width ci95 allows for the correlation of successive samples: for one
+run, t_{0.975,nu} sqrt(var(mean)) from the run's integrated autocorrelation time
+(effective sample size n_eff = sd^2 / var(mean)); for several --realisations,
+t_{0.975,R-1} sd(realisation means) / sqrt(R).  See coagulationPost.statistics.
   moments.png        m_k(x): means with 95 % CI bars and the analytic curve
   relativeError.png  (mean - analytic cell average) / analytic, with CI bars
   normalisedStdDev.png  sqrt(n var)/m_k against x, eq. (47) line for k = 1
@@ -70,6 +77,10 @@ def parse_args(argv):
     p.add_argument("--analytic", default="auto",
                    choices=("auto",) + analytic.KINDS + ("none",),
                    help="analytic reference (auto: from the kernel attribute)")
+    p.add_argument("--correlation-time", type=float, default=None, metavar="T",
+                   help="one run's interval: the autocorrelation sum spans at least T seconds "
+                        "(default: the residence time (x - x_inlet)/u upstream of the cell; "
+                        "0: Sokal's automatic window alone)")
     p.add_argument("--no-plots", action="store_true", help="skip the PNG files")
     g = p.add_argument_group("checks (exit 1 on failure)")
     g.add_argument("--check", action="store_true",
@@ -135,7 +146,8 @@ def main(argv=None):
     try:
         res = report.compute(args.realisations if args.realisations else [args.case],
                              t_relax=args.t_relax, t_end=args.t_end, u=args.u,
-                             x_inlet=args.x_inlet, analytic_kind=args.analytic)
+                             x_inlet=args.x_inlet, analytic_kind=args.analytic,
+                             correlation_time=args.correlation_time)
         out = args.out if os.path.isabs(args.out) else os.path.join(args.case, args.out)
         os.makedirs(out, exist_ok=True)
         report.print_table(res, args.t_end)

@@ -55,6 +55,12 @@ def _moment_panel(ax, k, ylabel, title_suffix="", which="major"):
     ax.legend(fontsize=8, loc="best")
 
 
+def _ci_kind(meta):
+    """What the report's interval allows for (report module doc)."""
+    r = meta.get("realisations", 1)
+    return "%d realisations, t" % r if r > 1 else "correlated samples, n_eff"
+
+
 def report_figures(res, out, x_inlet=0.0, t_end=None, check_rel_tol=None):
     """The report's figures; check_rel_tol draws the --check tolerance lines."""
     plt = _pyplot()
@@ -75,7 +81,7 @@ def report_figures(res, out, x_inlet=0.0, t_end=None, check_rel_tol=None):
     fig, panels = _moment_grid(plt, nm)
     for k, ax in panels:
         ax.errorbar(x, res["mean"][:, k], yerr=res["ci"][:, k], fmt="o", ms=3, capsize=2,
-                    color="C0", label="sample mean ± 95 % CI")
+                    color="C0", label="sample mean ± 95 %% CI (%s)" % _ci_kind(meta))
         if fine is not None:
             ax.plot(fine[0], fine[1][k], "k-", lw=1, label="analytic (%s)" % EQ_LABELS[kind][k])
         _moment_panel(ax, k, r"$m_{%d}(x)$" % k)
@@ -87,9 +93,13 @@ def report_figures(res, out, x_inlet=0.0, t_end=None, check_rel_tol=None):
         for k, ax in panels:
             a = res["analytic"][:, k]
             with np.errstate(invalid="ignore", divide="ignore"):
+                if "ciIid" in res:
+                    ax.errorbar(x, 100 * res["rel"][:, k], yerr=100 * res["ciIid"][:, k] / np.abs(a),
+                                fmt="none", capsize=4, color="0.6", lw=2,
+                                label="95 % CI if samples were independent")
                 ax.errorbar(x, 100 * res["rel"][:, k], yerr=100 * res["ci"][:, k] / np.abs(a),
                             fmt="o", ms=3, capsize=2, color="C0",
-                            label="(mean − analytic)/analytic ± 95 % CI")
+                            label="(mean − analytic)/analytic ± 95 %% CI (%s)" % _ci_kind(meta))
             ax.axhline(0.0, color="k", lw=1)
             if check_rel_tol is not None:
                 for s in (-1, 1):

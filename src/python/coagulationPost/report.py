@@ -3,11 +3,22 @@
 analytic duct reference; their CSV, JSON and text table (coagulationReport).
 
 For every cell and moment k, over the samples with t_relax <= t <= t_end (pooled
-over all realisations; successive samples are treated as independent, as in the
-paper): sample mean, sample standard deviation, count, 95 % confidence half-width
-of the mean 1.96 sd / sqrt(count), and the normalised standard deviation
+over all realisations): sample mean, sample standard deviation, count, the 95 %
+confidence half-width of the mean (ci), and the normalised standard deviation
 sqrt(n var(M_k)) / m_k (m_k the cell-averaged analytic reference where there is
 one, otherwise the sample mean).  Cells are sorted by x.
+
+Successive samples of a run are correlated (over up to the residence time
+upstream of the cell), so ci is not the paper's 1.96 sd / sqrt(count) (kept as
+ciIid):
+  one run (R = 1): statistics.correlated_interval of the run's ordered time
+      series: integrated autocorrelation time tau_int (Sokal's window, widened to
+      the residence time upstream of the cell where that gives a larger tau_int),
+      effective sample size n_eff and t_{0.975, nu} sqrt(var(mean));
+  R >= 2 realisations: t_{0.975, R-1} sd(realisation means) / sqrt(R)
+      (statistics.standard_error_from_realisations), which needs no model of the
+      time correlation; neff is then the sum of the runs' n_eff and tauInt the
+      runs' mean tau_int.
 """
 
 import json
@@ -23,28 +34,80 @@ EQ_LABELS = {"constantDuct": ("eq. 39", "eq. 41", "eq. 43", "eq. 45"),
              "additiveDuct": ("moment ODE", "eq. 50", "moment ODE", "moment ODE")}
 
 
-def compute(cases, t_relax=None, t_end=None, u=None, x_inlet=0.0, analytic_kind="auto"):
+def _min_window(ref, x, u, x_inlet, correlation_time):
+    """Smallest autocorrelation window (samples) of each cell: correlation_time
+    seconds / sampleInterval; correlation_time None: the residence time upstream of
+    the cell, (x - x_inlet)/u (u: the option, else the attribute u, else 1)."""
+    try:
+        dt = float(ref.get("sampleInterval", 0) or 0)
+    except (TypeError, ValueError):
+        dt = 0.0
+    if dt <= 0 or correlation_time == 0:
+        return 0
+    if correlation_time is None:
+        try:
+            uu = float(u if u is not None else ref.get("u", 1.0))
+        except (TypeError, ValueError):
+            uu = 1.0
+        t = np.maximum(x - x_inlet, 0.0) / abs(uu) if uu else np.zeros_like(x)
+    else:
+        t = np.full(len(x), float(correlation_time))
+    return np.ceil(t / dt - 1e-9).astype(int)[:, None]
+
+
+def compute(cases, t_relax=None, t_end=None, u=None, x_inlet=0.0, analytic_kind="auto",
+            correlation_time=None):
     """Statistics of the runs in `cases` (case directories, pooled).
 
     t_relax None: the files' tRelax; t_end None: all samples; u None: attribute u,
     else 1.0; analytic_kind "auto" (from the kernel attribute), "none" or one of
-    analytic.KINDS.  Returns a dict of per-cell arrays [cells][moments] (count,
+    analytic.KINDS; correlation_time: the smallest window of the autocorrelation sum
+    in seconds (None: the residence time upstream of each cell, 0: Sokal's alone).
+    Returns a dict of per-cell arrays [cells][moments] (count,
     mean, sd, var, ci, analytic, analyticCentre, rel, nsd), x, centres, the cell
     edges and meta (run attributes, realisations, the reference used)."""
-    reader, acc, runs = samples.RunReader(), None, []
+    reader, acc, runs, per_run = samples.RunReader(), None, [], []
     for c in cases:
         ids, data, info = reader.read(c, t_relax, t_end)
         if acc is None:
             acc = statistics.Accumulator(reader.nmom)
         acc.add(ids, data)
         runs.append(info)
+        # the run's ordered time series: its own mean, n_eff, interval and tau_int
+        xs = np.array(reader.cells.centres)[ids, 0] if len(ids) else np.zeros(0)
+        per_run.append((ids, statistics.correlated_interval_masked(
+            data, min_window=_min_window(reader.ref, xs, u, x_inlet, correlation_time))))
     ref = reader.ref
     centres = np.array(reader.cells.centres)
     order = np.lexsort((centres[:, 2], centres[:, 1], centres[:, 0]))
     centres = centres[order]
     count = acc.count[order]
     st = statistics.summary(count, acc.mean[order], acc.m2[order])
-    mean, var, sd, ci = st["mean"], st["var"], st["sd"], st["ci"]
+    mean, var, sd, ci_iid = st["mean"], st["var"], st["sd"], st["ci"]
+    ncells, nmom = len(reader.cells), reader.nmom
+    run_arrays = []                       # per run: mean, neff, ci, tau [cells][moments]
+    for ids, r in per_run:
+        full = [np.full((ncells, nmom), np.nan) for _ in range(4)]
+        for f, v in zip(full, r):
+            f[ids] = v
+        run_arrays.append([f[order] for f in full])
+    R = len(per_run)
+    if R == 1:
+        _, neff, ci, tau = run_arrays[0]
+        interval = ("one run: t_{0.975, N/(2M+1)} sqrt(var(mean)), var(mean) = 2 tau_int "
+                    "gamma0/(N-2M-1), n_eff = sd^2/var(mean), tau_int the integrated "
+                    "autocorrelation time summed over M lags (Sokal window c = %g)"
+                    % statistics.SOKAL_C)
+        interval += "; window at least %s" % (
+            "the residence time (x - xInlet)/u" if correlation_time is None
+            else "%g s" % correlation_time)
+    else:
+        _, ci = statistics.standard_error_from_realisations(np.array([a[0] for a in run_arrays]))
+        neff = np.sum([a[1] for a in run_arrays], axis=0)
+        tau = np.mean([a[3] for a in run_arrays], axis=0)
+        interval = ("%d realisations: t_{0.975, R-1} sd(realisation means) / sqrt(R)" % R)
+    if os.environ.get("COAGULATIONPOST_IID_INTERVAL") == "1":   # tests: the correction removed
+        ci = ci_iid
     empty = int((count[:, 0] == 0).sum())
     if empty == len(count):
         raise InputError("no sample with %s <= t <= %s in any cell"
@@ -81,6 +144,7 @@ def compute(cases, t_relax=None, t_end=None, u=None, x_inlet=0.0, analytic_kind=
         "u": u if u is not None else num("u", 1.0),
         "xInlet": x_inlet,
         "realisations": len(runs),
+        "interval": interval,
         "runs": runs,
     }
 
@@ -117,7 +181,7 @@ def compute(cases, t_relax=None, t_end=None, u=None, x_inlet=0.0, analytic_kind=
 
     return {
         "meta": meta, "centres": centres, "x": x, "count": count, "mean": mean,
-        "sd": sd, "ci": ci, "var": var, "analytic": ana_avg, "analyticCentre": ana_ctr,
+        "sd": sd, "ci": ci, "ciIid": ci_iid, "neff": neff, "tauInt": tau, "var": var, "analytic": ana_avg, "analyticCentre": ana_ctr,
         "rel": rel, "nsd": nsd, "edges": (lo, hi),
     }
 
@@ -138,8 +202,10 @@ def write_csv(res, out):
             f.write(fmt(x) + "," + ",".join(
                 fmt(res["mean"][i, k]) + "," + fmt(res["ci"][i, k]) for k in range(nm)) + "\n")
     p2 = os.path.join(out, "moments_full.csv")
-    cols = ("mean", "sd", "count", "ci95", "analytic", "analyticCentre", "relErr", "normStdDev")
-    keys = ("mean", "sd", "count", "ci", "analytic", "analyticCentre", "rel", "nsd")
+    cols = ("mean", "sd", "count", "ci95", "analytic", "analyticCentre", "relErr", "normStdDev",
+            "neff", "tauInt", "ci95_iid")
+    keys = ("mean", "sd", "count", "ci", "analytic", "analyticCentre", "rel", "nsd",
+            "neff", "tauInt", "ciIid")
     with open(p2, "w") as f:
         f.write("x,y,z," + ",".join("M%d_%s" % (k, c) for k in range(nm) for c in cols) + "\n")
         for i, c in enumerate(res["centres"]):
@@ -158,6 +224,12 @@ def write_summary(res, out, t_end):
     meta["tEnd"] = t_end
     meta["samplesPerCell"] = [int(res["count"][:, 0].min()), int(res["count"][:, 0].max())]
     meta["nCells"] = int(len(res["x"]))
+    meta["intervalNote"] = ("ci95 in moments*.csv and the plots' bars: " + meta["interval"]
+                            + "; ci95_iid = 1.96 sd / sqrt(count), as if samples were independent")
+    # per cell (sorted by x) and moment: effective sample size and tau_int (sample units)
+    meta["neff"] = [[None if not np.isfinite(v) else float(v) for v in row] for row in res["neff"]]
+    meta["tauInt"] = [[None if not np.isfinite(v) else float(v) for v in row]
+                      for row in res["tauInt"]]
     p = os.path.join(out, "summary.json")
     with open(p, "w") as f:
         json.dump(meta, f, indent=2, default=str)
@@ -179,6 +251,7 @@ def print_table(res, t_end):
     meta = res["meta"]
     nm = res["mean"].shape[1]
     print(title_of(meta, meta["runs"][0]["tRelax"], t_end))
+    print("95 %% interval: %s" % meta["interval"])
     print("analytic reference: %s%s" % (meta["analytic"] or "none",
                                         " (relative error to the cell average)"
                                         if meta["analytic"] else ""))
