@@ -72,27 +72,24 @@ done
 run E_Lie_2e-4 additiveKernelDuct Lie 2e-4 0.4 4e-3 seed 777
 run E_Strang_1.2e-3 additiveKernelDuct Strang 1.2e-3 0.4 4.8e-3 seed 777
 run E_Strang_2e-3 additiveKernelDuct Strang 2e-3 0.4 4e-3 seed 777
-ductReference="$COAGULATIONFOAM_BUILD/tests/benchmarks/ductReference"
-RD=12; [ "$quick" = quick ] && RD=2
-for scheme in Lie Strang; do
-    for dt in 6e-4 1.2e-3 2.4e-3; do
-        for ((r = 1; r <= RD; r++)); do
-            f="$out/D_${scheme}_${dt}_r$r.txt"
-            [ -s "$f" ] && continue
-            "$ductReference" SWA 4096 $((1000 + r)) 4.0 --dt $dt --splitting $scheme \
-                --K0 1e-30 --sample 4.8e-3 --cells > "$f.tmp" && mv "$f.tmp" "$f"
+# reference PART R n seed0 [ductReference options]...: R seeds of the OpenFOAM-free reference
+# per scheme and dt, each in OUT/PART_<scheme>_<dt>_r<seed>.txt
+reference()
+{
+    local part=$1 R=$2 n=$3 seed0=$4 scheme dt r f
+    shift 4
+    for scheme in Lie Strang; do
+        for dt in 6e-4 1.2e-3 2.4e-3; do
+            for ((r = 1; r <= R; r++)); do
+                f="$out/${part}_${scheme}_${dt}_r$r.txt"
+                [ -s "$f" ] && continue
+                "$COAGULATIONFOAM_BUILD/tests/benchmarks/ductReference" SWA "$n" $((seed0 + r)) 4.0 \
+                    --dt $dt --splitting $scheme --sample 4.8e-3 --cells "$@" > "$f.tmp" \
+                    && mv "$f.tmp" "$f"
+            done
         done
     done
-done
-RF=16; [ "$quick" = quick ] && RF=2
-for scheme in Lie Strang; do
-    for dt in 6e-4 1.2e-3 2.4e-3; do
-        for ((r = 1; r <= RF; r++)); do
-            f="$out/F_${scheme}_${dt}_r$r.txt"
-            [ -s "$f" ] && continue
-            "$ductReference" SWA 1024 $((2000 + r)) 4.0 --dt $dt --splitting $scheme \
-                --sample 4.8e-3 --cells > "$f.tmp" && mv "$f.tmp" "$f"
-        done
-    done
-done
+}
+reference D "$([ "$quick" = quick ] && echo 2 || echo 12)" 4096 1000 --K0 1e-30
+reference F "$([ "$quick" = quick ] && echo 2 || echo 16)" 1024 2000
 "$COAGULATIONFOAM_PYTHON" "$here/splittingStudy.py" "$out"
