@@ -1,0 +1,219 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
+"""Planted bugs in the OpenFOAM layer and the tools (issue 21 part 2).
+
+Each bug is one exact-string replacement in one file; the old string must occur exactly
+once (a bug whose string is gone after a refactoring is reported, not planted somewhere
+else). B01-B19 are the bugs of the first campaign (on the layout before issue 14's
+submodels), ported to the current files with the same meaning; B20-B28 are new. B14-B17 now
+sit in the coagulationPost package (the campaign measured them in the scripts it came from).
+
+    bugs.py list                 id, file, targeted tests, what the bug is
+    bugs.py plant ID             plant the bug in $BUGROOT (default: this checkout)
+    bugs.py check [ID...]        every string still occurs exactly once (nothing planted)
+    bugs.py file ID | tests ID   the file the bug is in | the ctest -R regex to run
+"""
+import os
+import sys
+
+ROOT = os.environ.get("BUGROOT") or os.path.abspath(
+    os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", ".."))
+
+M = "src/coagulationModels/"
+INFLOW = M + "submodels/injectionModels/patchInflow/patchInflow.C"
+SCALING = M + "clouds/statisticalScaling/statisticalScaling.C"
+BALANCE = M + "cloudFunctions/massBalance/massBalance.C"
+SEEDS = M + "clouds/streamSeeds/streamSeeds.C"
+MOMENTS = M + "cloudFunctions/momentFields/momentFields.C"
+SAMPLER = M + "cloudFunctions/momentSampler/momentSampler"
+# The report and tables tools are thin command lines over this package (issue 14)
+STATS = "src/python/coagulationPost/statistics.py"
+SAMPLES = "src/python/coagulationPost/samples.py"
+CHECKS = "src/python/coagulationPost/checks.py"
+
+# Every targeted run includes the fault and bad-input cases
+ALWAYS = "case_faults|case_badInput"
+
+# id: (file, old, new, targeted tests (ctest -R, without ALWAYS), what the bug is)
+BUGS = {
+    "B01": (INFLOW,
+            "                entered.add(W, mass_);\n",
+            "                entered.add(W, 1);\n",
+            "case_transport|case_inflow|case_restart|case_streams",
+            "inflow booking: inflow mass booked without the particle mass"),
+    "B02": (INFLOW,
+            "count(density_*inwardFlux*dt/W);\n",
+            "count(density_*mag(Sf[facei])*dt/W);\n",
+            "case_transport|case_inflow|case_restart|case_streams",
+            "inflow counting: Poisson mean from the face area, not the flux"),
+    "B03": (SCALING,
+            "        gSum(mesh.V())/returnReduce(mesh.nCells(), sumOp<label>());\n",
+            "        gSum(mesh.V())/mesh.nCells();\n",
+            "case_streams|case_parallel|case_transport",
+            "W: mean cell volume = global volume / local cell count"),
+    "B04": (BALANCE,
+            "    b.mass = events.inceptions*W*cloud_.inception().core().type.mass;\n",
+            "    b.mass = events.inceptions*W;\n",
+            "case_transport|case_inflow|case_streams",
+            "mass balance: incepted mass without the inception mass"),
+    "B05": (BALANCE,
+            "        initial_.mass + inflow + incepted - outflow + control;\n",
+            "        initial_.mass + inflow + incepted - outflow - control;\n",
+            "case_transport|case_inflow|case_streams",
+            "mass balance: number-control change subtracted"),
+    "B06": (SEEDS,
+            "    s = mix64(s ^ uint64_t(time_.timeIndex()));\n", "",
+            "case_streams|case_restart|case_transport",
+            "streamSeed: time index dropped"),
+    "B07": (SEEDS,
+            "    s = mix64(s ^ uint64_t(Pstream::myProcNo()));\n", "",
+            "case_streams|case_restart|case_transport",
+            "streamSeed: processor dropped"),
+    "B08": (SEEDS,
+            "    s = mix64(s ^ uint64_t(index));\n", "",
+            "case_streams|case_restart|case_transport",
+            "streamSeed: cell/face index dropped"),
+    "B09": (INFLOW,
+            "            rng_.engine().seed\n"
+            "            (\n"
+            "                cloud_.seeds()(pp.start() + facei, stream)\n"
+            "            );\n", "",
+            "case_restart|case_transport|case_inflow|case_streams",
+            "restart seeding: inflow stream not reseeded per face and step"),
+    "B10": (MOMENTS,
+            "            s3 += w*m*m*m;\n", "            s3 += w*m*m;\n",
+            "case_transport|case_streams|case_restart",
+            "moments: M3 with the wrong power"),
+    "B11": (MOMENTS,
+            "        M1[celli] = s1/V[celli];\n", "        M1[celli] = s1/V[0];\n",
+            "case_transport|case_streams|case_restart",
+            "moments: M1 divided by the first cell's volume"),
+    "B12": (SAMPLER + ".C",
+            "            values_[4*celli + k] = M[k][celli];\n",
+            "            values_[celli + nCells*k] = M[k][celli];\n",
+            "case_transport|case_streams|case_restart",
+            "sampler: [moment][cell] layout instead of [cell][moment]"),
+    "B13": (SAMPLER + ".H",
+            "        virtual void postStep() { sample(); }\n",
+            "        virtual void postCellStep() { sample(); }\n",
+            "case_transport|case_streams|case_restart",
+            "sampler: sample taken before the moments are updated (one step late)"),
+    "B14": (STATS,
+            "    m2 = m2a + m2b + delta ** 2 * na * nb / safe\n",
+            "    m2 = m2a + m2b\n",
+            "report_selfTest|tables_selfTest",
+            "report pooling: between-realisation term of the Chan update dropped"),
+    "B15": (STATS,
+            "        var = np.where(count > 1, m2 / np.maximum(count - 1, 1), np.nan)\n",
+            "        var = np.where(count > 1, m2 / np.maximum(count, 1), np.nan)\n",
+            "report_selfTest|tables_selfTest",
+            "report: variance divided by N, not N-1"),
+    "B16": (SAMPLES,
+            '    dirs = sorted(d for d in glob.glob(os.path.join(row_dir, "realisation_*")) if os.path.isdir(d))\n',
+            '    dirs = sorted(d for d in glob.glob(os.path.join(row_dir, "realisation_?")) if os.path.isdir(d))\n',
+            "tables_selfTest",
+            "tables: realisation_10 and up dropped from a row"),
+    "B17": (CHECKS,
+            "        chk.result(bool(np.all(np.abs(rel) <= allowed)),\n",
+            "        chk.result(bool(np.any(np.abs(rel) <= allowed)),\n",
+            "tables_selfTest",
+            "tables: eq. 47 check passes if any cell (not every cell) agrees"),
+    "B18": ("applications/utilities/coagulationEnsemble/coagulationEnsemble",
+            'awk -v c="$((np * threads))"', 'awk -v c="$np"',
+            "case_ensemble",
+            "ensemble: core-seconds count ranks, not ranks x threads"),
+    "B19": ("applications/utilities/coagulationTables/coagulationTableStudy",
+            '"$dir" $((seed0 + 100000 * row)) &\n', '"$dir" "$seed0" &\n',
+            "case_reducedTables",
+            "study: every row uses the same seeds"),
+    # ---- new bugs, in code that did not exist or was not covered in the first campaign
+    "B20": (M + "coagulationParticle/coagulationParticle.H",
+            "            reflection_ = (I - 2*sqr(n)) & reflection_;\n",
+            "            reflection_ = (I - sqr(n)) & reflection_;\n",
+            "case_submodels|case_constantDuct_SWA|case_transport",
+            "wall rebound: the normal velocity removed (projection), not mirrored"),
+    "B21": (M + "submodels/transportModels/frozenFlow/frozenFlow.C",
+            "        cloud_.index().invalidateList();\n", "",
+            "case_parallel|case_streams|case_threads",
+            "cellParticleIndex: list cache not invalidated after Cloud::move (parallel)"),
+    "B22": (SCALING,
+            '        V1_ = caseChecks::positive(dict.subDict("V1"), algorithm);\n',
+            '        V1_ = caseChecks::positive(dict.subDict("V1"), "SWA");\n',
+            "case_submodels|case_constantDuct_DSA1|case_constantDuct_DSA2|case_threads",
+            "W: the SWA V1 for every algorithm (DSA1/DSA2 get W 8x too large)"),
+    "B23": (INFLOW,
+            "        patches_[i] = boundary.findPatchID(patchNames[i]);\n",
+            "        patches_[i] = boundary.findPatchID(patchNames[0]);\n",
+            "case_submodels|case_inflow|case_transport|case_restart",
+            "inflow patch selection: every listed patch resolved to the first"),
+    "B24": (M + "clouds/cellStepper/cellStepper.C",
+            "        cloud_.inception().core().rate > 0 && cloud_.inception().incepts(celli);\n",
+            "        cloud_.inception().core().rate > 0;\n",
+            "case_submodels|case_transport|case_streams|case_constantDuct_SWA",
+            "cellZone inception: every cell incepts, the zone ignored"),
+    "B25": (M + "clouds/cellParticleIndex/cellParticleIndex.C",
+            "            cells_[kept] = cells_[k];\n", "",
+            "case_constantDuct_SWA|case_transport|case_threads",
+            "cellParticleIndex: compact() drops particles but not their cells"),
+    "B26": (M + "clouds/coagulationCloud/coagulationCloud.C",
+            "        f.end();\n    }\n    completeWrite();\n",
+            "        f.end();\n    }\n",
+            "case_restart|case_ensemble",
+            "completion marker: the last write of a run not marked complete"),
+    "B27": (BALANCE,
+            "    if (!(mag(mError) <= 1e-9) || pError != 0)\n",
+            "    if (mError != 0 || pError != 0)\n",
+            "case_transport|case_inflow|case_constantDuct_SWA",
+            "balance check: exact zero mass error demanded (no round-off tolerance)"),
+    "B28": (M + "coagulationParticle/coagulationParticle.C",
+            "    td.resetReflection();\n", "",
+            "case_submodels|case_constantDuct_SWA|case_transport",
+            "wall rebound: the reflection not reset per move (carried to the next particle)"),
+}
+
+
+def targeted(bug):
+    return BUGS[bug][3] + "|" + ALWAYS
+
+
+def main(argv):
+    if not argv or argv[0] == "list":
+        for k, (f, old, new, tests, what) in BUGS.items():
+            print("%s  %-70s %s\n      tests: %s" % (k, f, what, targeted(k)))
+        return 0
+    cmd, ids = argv[0], argv[1:]
+    if cmd == "file":
+        print(BUGS[ids[0]][0])
+        return 0
+    if cmd == "tests":
+        print(targeted(ids[0]))
+        return 0
+    if cmd == "what":
+        print(BUGS[ids[0]][4])
+        return 0
+    if cmd == "check":
+        bad = 0
+        for k in ids or BUGS:
+            f, old = BUGS[k][:2]
+            n = open(os.path.join(ROOT, f)).read().count(old)
+            if n != 1:
+                print("%s: %s occurs %d times in %s" % (k, old.strip().splitlines()[0], n, f))
+                bad += 1
+        print("%d of %d bug strings found exactly once" % (len(ids or BUGS) - bad, len(ids or BUGS)))
+        return 1 if bad else 0
+    if cmd == "plant":
+        k = ids[0]
+        f, old, new, tests, what = BUGS[k]
+        p = os.path.join(ROOT, f)
+        s = open(p).read()
+        assert s.count(old) == 1, (k, f, s.count(old))
+        line = s[:s.index(old)].count("\n") + 1
+        open(p, "w").write(s.replace(old, new))
+        print("%s planted at %s:%d (%s)" % (k, f, line, what))
+        return 0
+    print(__doc__)
+    return 2
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
