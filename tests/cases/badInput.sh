@@ -69,6 +69,20 @@ expectFatal oneMaxParticles    "maxParticlesPerCell" -entry numberControl -set "
 expectFatal inflowOnOutlet     "no inward flow"   -entry inflow -set "{ patches (outlet); density 1e9; mass 1; }"
 expectFatal inflowNoPatches    "lists no patch"   -entry inflow -set "{ patches (); density 1e9; mass 1; }"
 expectFatal longSampleInterval "sampleInterval"   -entry sampling/sampleInterval -set 5
+# The random walk and the initial population (issue 15)
+expectFatal unknownDispersion  "random"           -entry dispersion -set "{ type random; }"
+expectFatal typoDispersion     "Dt"               -entry dispersion -set "{ type constant; Dt 1e-3; }"
+expectFatal negativeD          "'D'"              -entry dispersion -set "{ type constant; D -1e-3; }"
+expectFatal zeroSct            "Sct"              -entry dispersion -set "{ type turbulent; Sct 0; }"
+expectFatal missingNut         "needs the field 'nut'" -entry dispersion -set "{ type turbulent; Sct 0.7; }"
+expectFatal brownianNoT        "'T'"              -entry dispersion -set "{ type Brownian; mu 1.8e-5; lambda 6.6e-8; rho 1000; }"
+expectFatal brownianNegRho     "rho"              -entry dispersion -set "{ type Brownian; T 300; mu 1.8e-5; lambda 6.6e-8; rho -1; }"
+expectFatal initialZone        "nowhere"          -entry initialPopulation -set "{ numberDensity 1e9; mass 1; cellZone nowhere; }"
+expectFatal initialBoth        "exactly one"      -entry initialPopulation -set "{ numberDensity 1e9; numberDensityField n0; mass 1; }"
+expectFatal initialNoField     "'n0'"             -entry initialPopulation -set "{ numberDensityField n0; mass 1; }"
+expectFatal initialBadTable    "sizeDistribution" -entry initialPopulation -set "{ numberDensity 1e9; sizeDistribution ((1 -0.5)); }"
+expectFatal initialTypo        "numberDensty"     -entry initialPopulation -set "{ numberDensty 1e9; mass 1; }"
+expectFatal initialTooMany     "free memory"      -entry initialPopulation -set "{ numberDensity 1e30; mass 1; }"
 file=system/controlDict
 expectFatal endTimeBelowStep   "endTime"          -entry endTime -set 4e-5
 expectFatal courantAboveOne    "deltaT"           -entry deltaT -set 0.01

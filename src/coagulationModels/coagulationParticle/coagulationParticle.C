@@ -46,9 +46,11 @@ bool Foam::coagulationParticle::move
     {
         // The carrier velocity is constant within a cell: track to the
         // next face (or the end of the step) in one straight segment, within
-        // the solved directions of a 1-D/2-D mesh
+        // the solved directions of a 1-D/2-D mesh; a walk is one straight
+        // step, mirrored at the faces it rebounds from
         const scalar f = 1 - stepFraction();
-        vector displacement = f*trackTime*td.velocity(cell());
+        vector displacement =
+            td.walk() ? f*dispersal_ : f*trackTime*td.velocity(cell());
         meshTools::constrainDirection(mesh(), solutionD, displacement);
 
         trackToAndHitFace(displacement, f, cloud, td);
@@ -64,6 +66,13 @@ bool Foam::coagulationParticle::move
             td.bookStalled();
             stepFraction() = 1;
         }
+    }
+
+    // The walk is made (or the particle is gone); a particle handed to
+    // another processor keeps the rest of it
+    if (td.walk() && !td.switchProcessor)
+    {
+        dispersal_ = Zero;
     }
 
     return td.keepParticle;
@@ -105,7 +114,7 @@ bool Foam::coagulationParticle::hitPatch
      || isA<emptyPolyPatch>(pp)
     )
     {
-        td.reflect(normal());
+        reflect(td, normal());
         return true;
     }
 

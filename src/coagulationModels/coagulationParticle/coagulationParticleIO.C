@@ -30,19 +30,21 @@ Foam::coagulationParticle::coagulationParticle
 :
     particle(mesh, is, readFields, newFormat),
     mass_(0),
-    weight_(0)
+    weight_(0),
+    dispersal_(Zero)
 {
     if (readFields)
     {
         if (is.format() == IOstream::ASCII)
         {
-            is >> mass_ >> weight_;
+            is >> mass_ >> weight_ >> dispersal_;
         }
         else if (!is.checkLabelSize<>() || !is.checkScalarSize<>())
         {
             is.beginRawRead();
             readRawScalar(is, &mass_);
             readRawScalar(is, &weight_);
+            readRawScalar(is, dispersal_.data(), vector::nComponents);
             is.endRawRead();
         }
         else
@@ -107,7 +109,8 @@ Foam::Ostream& Foam::operator<<(Ostream& os, const coagulationParticle& p)
     {
         os  << static_cast<const particle&>(p)
             << token::SPACE << p.mass_
-            << token::SPACE << p.weight_;
+            << token::SPACE << p.weight_
+            << token::SPACE << p.dispersal_;
     }
     else
     {

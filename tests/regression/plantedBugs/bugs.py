@@ -30,6 +30,7 @@ SAMPLER = M + "cloudFunctions/momentSampler/momentSampler"
 STATS = "src/python/coagulationPost/statistics.py"
 SAMPLES = "src/python/coagulationPost/samples.py"
 CHECKS = "src/python/coagulationPost/checks.py"
+DISPERSION = M + "submodels/dispersionModels/dispersionModel/dispersionModel.C"
 
 # Every targeted run includes the fault and bad-input cases
 ALWAYS = "case_faults|case_badInput"
@@ -169,6 +170,27 @@ BUGS = {
             "    td.resetReflection();\n", "",
             "case_submodels|case_constantDuct_SWA|case_transport",
             "wall rebound: the reflection not reset per move (carried to the next particle)"),
+    # The random walk (issue 15); numbered from B40 so that other branches' bugs keep theirs
+    "B40": (DISPERSION,
+            "        drift*dt + sqrt(2*D*dt)*vector(xi[0], xi[1], xi[2]);\n",
+            "        drift*dt + sqrt(D*dt)*vector(xi[0], xi[1], xi[2]);\n",
+            "case_dispersion",
+            "random walk: variance D dt instead of 2 D dt"),
+    "B41": (DISPERSION,
+            "    if (bestP > 0 && s.uniform() > survive)\n",
+            "    if (bestP < 0 && s.uniform() > survive)\n",
+            "case_dispersion",
+            "stick walls: no Brownian-bridge deposition between the ends of a step"),
+    "B42": (M + "submodels/dispersionModels/turbulentDispersion/turbulentDispersion.C",
+            "        drift = inv(edges) & vector(v1 - v0, v2 - v0, v3 - v0);\n",
+            "        drift = Zero;\n",
+            "case_dispersion",
+            "turbulent dispersion: no drift grad(D) (the well-mixed condition fails)"),
+    "B43": (M + "coagulationParticle/coagulationParticleI.H",
+            "        dispersal_ = (I - 2*sqr(n)) & dispersal_;\n",
+            "        td.reflect(n);\n",
+            "case_dispersion",
+            "rebound walls: the walk's step not mirrored at the wall"),
 }
 
 

@@ -10,6 +10,7 @@
 #include "coagulation/CellAlgorithm.hpp"
 #include "coagulation/CellPopulation.hpp"
 #include "coagulation/CoagulationKernel.hpp"
+#include "coagulation/Dispersion.hpp"
 #include "coagulation/ExactSolutions.hpp"
 #include "coagulation/Inception.hpp"
 #include "coagulation/MomentSeriesFile.hpp"

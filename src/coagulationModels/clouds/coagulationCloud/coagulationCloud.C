@@ -103,7 +103,8 @@ Foam::coagulationCloud::coagulationCloud
         {
             "algorithm", "kernel", "inception", "inflow", "transport",
             "statisticalWeight", "seed", "sampling", "numberControl",
-            "splitting", "patchInteraction"
+            "splitting", "patchInteraction", "dispersion",
+            "initialPopulation"
         }
     );
 
@@ -172,6 +173,10 @@ Foam::coagulationCloud::coagulationCloud
     (
         properties_.subOrEmptyDict("transport"), *this
     );
+    dispersion_ = dispersionModel::New
+    (
+        properties_.subOrEmptyDict("dispersion"), mesh_
+    );
     if (properties_.found("inflow"))
     {
         injection_ = injectionModel::New(properties_.subDict("inflow"), *this);
@@ -183,12 +188,14 @@ Foam::coagulationCloud::coagulationCloud
             properties_.subDict("patchInteraction"), mesh_
         )
       : autoPtr<patchInteractionModel>(new patchInteractionModel(mesh_));
+    dispersion_->setStickWalls(patchInteraction_->stick());
 
     // Particles of the start time, if any: of a completely written time of
     // this mesh, each in a cell with a finite positive mass and weight
     checkStartTime();
     coagulationParticle::readFields(*this);
     checkParticles();
+    createInitialPopulation();
 
     // The cloud may grow into the memory free now, less a quarter for the
     // rest of the run (fields, samples, the cell step's work arrays)
@@ -225,6 +232,36 @@ Foam::coagulationCloud::coagulationCloud
 }
 
 
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::coagulationCloud::createInitialPopulation()
+{
+    if (!properties_.found("initialPopulation"))
+    {
+        return;
+    }
+
+    // Checked on every start, used on a fresh one only: a start time that
+    // holds particle files of this cloud (a restart) continues from them
+    const initialPopulation initial
+    (
+        properties_.subDict("initialPopulation"), *this
+    );
+    const fileName dir(mesh_.time().timePath()/cloud::prefix/name());
+    bool written = isFile(dir/"coordinates") || isFile(dir/"positions");
+    reduce(written, orOp<bool>());
+    if (written)
+    {
+        Info<< "Initial population: not used, the start time "
+            << mesh_.time().timeName() << " has the cloud's particles" << endl;
+        return;
+    }
+
+    const label created = returnReduce(initial.create(*this), sumOp<label>());
+    Info<< "Initial population: " << created << " particles" << endl;
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 const Foam::PtrList<Foam::volScalarField>&
@@ -254,7 +291,15 @@ void Foam::coagulationCloud::transport
 )
 {
     transportModel::outflow out(mesh_.boundaryMesh().size());
-    transport_->move(U, dt, out);
+    transport_->move
+    (
+        U,
+        dt,
+        inflowStream == streamSeeds::inflowFirstHalf
+      ? streamSeeds::walkFirstHalf
+      : streamSeeds::walk,
+        out
+    );
 
     for (cloudFunction& f : functions_)
     {

@@ -55,7 +55,8 @@ void Foam::transportModels::frozenFlow::moveOnThreads
 (
     const volVectorField& U,
     coagulationParticle::trackingData& td,
-    const scalar dt
+    const scalar dt,
+    const streamSeeds::purpose walkStream
 )
 {
     // What a move did with a particle (zero: kept, so that the array marks
@@ -92,12 +93,17 @@ void Foam::transportModels::frozenFlow::moveOnThreads
             cloud_, U, outParticles, outNumber, outMass,
             cloud_.patchInteraction().stick()
         );
+        threadTd.setWalk(td.walk());
 
         #pragma omp for schedule(dynamic, 4096)
         for (label k = 0; k < nParticles; ++k)
         {
             coagulationParticle& p = *index.particles()[k];
             p.stepFraction() = 0;
+            if (td.walk())
+            {
+                p.dispersal() = walkStep(p, k, dt, walkStream);
+            }
             const label booked = threadTd.nBooked();
             const bool kept = p.move(cloud_, threadTd, dt);
             outcome_[k] =
@@ -137,12 +143,26 @@ void Foam::transportModels::frozenFlow::moveOnThreads
 }
 
 
+Foam::vector Foam::transportModels::frozenFlow::walkStep
+(
+    const coagulationParticle& p,
+    const label k,
+    const scalar dt,
+    const streamSeeds::purpose walkStream
+) const
+{
+    coag::CounterStream stream(cloud_.seeds()(k, walkStream));
+    return cloud_.dispersion().displacement(p, dt, stream);
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::transportModels::frozenFlow::move
 (
     const volVectorField& U,
     const scalar dt,
+    const streamSeeds::purpose walkStream,
     outflow& out
 )
 {
@@ -152,16 +172,38 @@ void Foam::transportModels::frozenFlow::move
         cloud_.patchInteraction().stick()
     );
     cloud_.index().invalidateSort();
-    if (!cloudMove && !Pstream::parRun())
+
+    // Advection with U, then (operator splitting within the transport) the
+    // random walk of the dispersion model: each a pass over all particles
+    const bool walks = cloud_.dispersion().active();
+    for (const bool walk : {false, true})
     {
-        moveOnThreads(U, td, dt);
-    }
-    else
-    {
-        // Decomposed runs hand particles to other processors: Cloud::move
-        // (and the walk of the linked list it implies)
-        cloud_.index().invalidateList();
-        cloud_.Cloud<coagulationParticle>::move(cloud_, td, dt);
+        if (walk && !walks)
+        {
+            break;
+        }
+        td.setWalk(walk);
+        if (!cloudMove && !Pstream::parRun())
+        {
+            moveOnThreads(U, td, dt, walkStream);
+        }
+        else
+        {
+            // Decomposed runs hand particles to other processors:
+            // Cloud::move (and the walk of the linked list it implies); a
+            // walk's steps are drawn first, in list order, and travel with
+            // the particles that change processor
+            cloud_.index().invalidateList();
+            if (walk)
+            {
+                label k = 0;
+                for (coagulationParticle& p : cloud_)
+                {
+                    p.dispersal() = walkStep(p, k++, dt, walkStream);
+                }
+            }
+            cloud_.Cloud<coagulationParticle>::move(cloud_, td, dt);
+        }
     }
 
     // A particle that reached a patch type it does not handle was stopped

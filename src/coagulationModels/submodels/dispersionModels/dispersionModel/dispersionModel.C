@@ -1,0 +1,194 @@
+/*---------------------------------------------------------------------------*\
+  coagulationFoam: weighted stochastic particles coupled to OpenFOAM
+  Copyright (C) 2025-2026 the coagulationFoam authors
+  SPDX-License-Identifier: GPL-3.0-or-later (see COPYING); links OpenFOAM,
+  which is GPL-3.0-or-later too
+\*---------------------------------------------------------------------------*/
+
+#include "dispersionModel.H"
+#include "coagulationParticle.H"
+#include "caseChecks.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(dispersionModel, 0);
+    defineRunTimeSelectionTable(dispersionModel, dictionary);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::dispersionModel::dispersionModel(const fvMesh& mesh)
+:
+    mesh_(mesh),
+    cellStickFaces_(mesh.nCells())
+{}
+
+
+// * * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
+
+Foam::autoPtr<Foam::dispersionModel> Foam::dispersionModel::New
+(
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+{
+    const word modelType(dict.getOrDefault<word>("type", "none"));
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInLookup
+        (
+            dict,
+            "dispersionModel",
+            modelType,
+            *dictionaryConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+
+    Info<< "Selecting dispersion model " << modelType << endl;
+
+    return autoPtr<dispersionModel>(cstrIter()(dict, mesh));
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::dispersionModel::setStickWalls(const boolList& stick)
+{
+    const polyBoundaryMesh& patches = mesh_.boundaryMesh();
+    List<DynamicList<label>> near(mesh_.nCells());
+    forAll(patches, patchi)
+    {
+        if (!stick[patchi])
+        {
+            continue;
+        }
+        const polyPatch& pp = patches[patchi];
+        forAll(pp, i)
+        {
+            const label facei = pp.start() + i;
+            for (const label pointi : mesh_.faces()[facei])
+            {
+                for (const label celli : mesh_.pointCells()[pointi])
+                {
+                    if (!near[celli].found(facei))
+                    {
+                        near[celli].append(facei);
+                    }
+                }
+            }
+        }
+    }
+    forAll(near, celli)
+    {
+        cellStickFaces_[celli].transfer(near[celli]);
+    }
+}
+
+
+Foam::vector Foam::dispersionModel::displacement
+(
+    const coagulationParticle& p,
+    const scalar dt,
+    coag::CounterStream& s
+) const
+{
+    vector drift(Zero);
+    const scalar D = diffusivity(p, drift);
+
+    // Ito-Euler step of dX = grad(D) dt + sqrt(2 D) dW (eq. 8 of the
+    // coagulation-diffusion paper, with D varying in space)
+    double xi[3];
+    s.normal3(xi);
+    const vector step =
+        drift*dt + sqrt(2*D*dt)*vector(xi[0], xi[1], xi[2]);
+
+    const labelList& faces = cellStickFaces_[p.cell()];
+    if (faces.empty() || !(D > 0))
+    {
+        return step;
+    }
+
+    // Bridge correction at stick walls: per patch the face plane the bridge
+    // most likely touched, P = exp(-a b/(D dt)) with both ends inside
+    const polyBoundaryMesh& patches = mesh_.boundaryMesh();
+    const vector x0 = p.position();
+    scalar survive = 1;
+    scalar bestP = 0;
+    vector toWall(Zero);
+    label lastPatch = -1;
+    scalar patchP = 0;
+    vector patchToWall(Zero);
+    auto closePatch = [&]()
+    {
+        survive *= 1 - patchP;
+        if (patchP > bestP)
+        {
+            bestP = patchP;
+            toWall = patchToWall;
+        }
+        patchP = 0;
+    };
+    for (const label facei : faces)
+    {
+        const label patchi = patches.whichPatch(facei);
+        if (patchi != lastPatch)
+        {
+            closePatch();
+            lastPatch = patchi;
+        }
+        const vector n = normalised(mesh_.faceAreas()[facei]);
+        const scalar a = (mesh_.faceCentres()[facei] - x0) & n;
+        const scalar b = a - (step & n);
+        if (a > 0 && b > 0)
+        {
+            const scalar P = exp(-a*b/(D*dt));
+            if (P > patchP)
+            {
+                patchP = P;
+                patchToWall = (1 + 1e-6)*a*n + 1e-9*sqrt(D*dt)*n;
+            }
+        }
+    }
+    closePatch();
+
+    if (bestP > 0 && s.uniform() > survive)
+    {
+        return toWall;
+    }
+    return step;
+}
+
+
+coag::BrownianGas Foam::dispersionModel::readBrownianGas
+(
+    const dictionary& dict,
+    const wordList& otherKeys
+)
+{
+    wordList valid{"T", "mu", "lambda", "rho", "massUnit", "A1", "A2", "A3"};
+    valid.append(otherKeys);
+    caseChecks::keywords(dict, valid);
+
+    coag::BrownianGas gas;
+    gas.temperature = caseChecks::positive(dict, "T");
+    gas.viscosity = caseChecks::positive(dict, "mu");
+    gas.meanFreePath = caseChecks::positive(dict, "lambda");
+    gas.density = caseChecks::positive(dict, "rho");
+    if (dict.found("massUnit"))
+    {
+        gas.massUnit = caseChecks::positive(dict, "massUnit");
+    }
+    if (dict.found("A1")) gas.A1 = caseChecks::nonNegative(dict, "A1");
+    if (dict.found("A2")) gas.A2 = caseChecks::nonNegative(dict, "A2");
+    if (dict.found("A3")) gas.A3 = caseChecks::positive(dict, "A3");
+    return gas;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,128 @@
+/*---------------------------------------------------------------------------*\
+  coagulationFoam: weighted stochastic particles coupled to OpenFOAM
+  Copyright (C) 2025-2026 the coagulationFoam authors
+  SPDX-License-Identifier: GPL-3.0-or-later (see COPYING); links OpenFOAM,
+  which is GPL-3.0-or-later too
+\*---------------------------------------------------------------------------*/
+
+#include "turbulentDispersion.H"
+#include "coagulationParticle.H"
+#include "caseChecks.H"
+#include "volFields.H"
+#include "volPointInterpolation.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace dispersionModels
+{
+    defineTypeNameAndDebug(turbulentDispersion, 0);
+    addToRunTimeSelectionTable(dispersionModel, turbulentDispersion, dictionary);
+}
+}
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::dispersionModels::turbulentDispersion::turbulentDispersion
+(
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+:
+    dispersionModel(mesh),
+    cellD_(),
+    pointD_(),
+    drift_(dict.getOrDefault<bool>("drift", true)),
+    brownian_(dict.found("Brownian")),
+    gas_()
+{
+    caseChecks::keywords(dict, {"type", "Sct", "nut", "drift", "Brownian"});
+    const scalar Sct = caseChecks::positive(dict, "Sct");
+    if (brownian_)
+    {
+        gas_ = readBrownianGas(dict.subDict("Brownian"));
+    }
+
+    // The turbulent viscosity of the start time, as the flow solver wrote it
+    const word nutName(dict.getOrDefault<word>("nut", "nut"));
+    IOobject io
+    (
+        nutName,
+        mesh.time().timeName(),
+        mesh,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+    if (!io.typeHeaderOk<volScalarField>(true))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Dispersion model " << typeName << " in " << dict.name()
+            << " needs the field '" << nutName << "' (entry 'nut'), which is"
+            << " not in " << io.objectPath() << nl
+            << "    Start from a time the flow solver wrote (with its"
+            << " turbulence fields), or map them with mapFields" << nl
+            << exit(FatalIOError);
+    }
+    const volScalarField nut(io, mesh);
+
+    if (gMin(nut.primitiveField()) < 0 || !std::isfinite(gSum(nut.primitiveField())))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Field " << nut.objectPath() << " (entry 'nut' of "
+            << dict.name() << ") has negative or non-finite values:"
+            << " min " << gMin(nut.primitiveField()) << nl
+            << exit(FatalIOError);
+    }
+
+    const volScalarField D("Dt", nut/Sct);
+    cellD_ = D.primitiveField();
+    pointD_ = volPointInterpolation::New(mesh).interpolate(D)().primitiveField();
+
+    Info<< "    turbulent diffusivity nut/Sct in [" << gMin(cellD_) << ", "
+        << gMax(cellD_) << "] m^2/s, drift " << (drift_ ? "on" : "off")
+        << (brownian_ ? ", plus Brownian" : "") << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::dispersionModels::turbulentDispersion::diffusivity
+(
+    const coagulationParticle& p,
+    vector& drift
+) const
+{
+    // D linear in the particle's tet: the centre's value and the three
+    // points' values, weighted by the barycentric coordinates
+    // (interpolationCellPoint)
+    const tetIndices tetIs = p.currentTetIndices();
+    const triFace tri = tetIs.faceTriIs(mesh_);
+    const barycentric& b = p.coordinates();
+    const scalar v0 = cellD_[tetIs.cell()];
+    const scalar v1 = pointD_[tri[0]];
+    const scalar v2 = pointD_[tri[1]];
+    const scalar v3 = pointD_[tri[2]];
+    scalar D = max(b[0]*v0 + b[1]*v1 + b[2]*v2 + b[3]*v3, scalar(0));
+
+    // Its gradient in the tet: (x_k - x_0) . g = v_k - v_0, k = 1, 2, 3
+    drift = Zero;
+    if (drift_)
+    {
+        const tetPointRef t = tetIs.tet(mesh_);
+        const tensor edges(t.b() - t.a(), t.c() - t.a(), t.d() - t.a());
+        drift = inv(edges) & vector(v1 - v0, v2 - v0, v3 - v0);
+    }
+
+    if (brownian_)
+    {
+        D += coag::brownianDiffusivity(p.mass(), gas_);
+    }
+
+    return D;
+}
+
+
+// ************************************************************************* //
