@@ -48,16 +48,33 @@ bool Foam::coagulationParticle::move
         // next face (or the end of the step) in one straight segment, within
         // the solved directions of a 1-D/2-D mesh; a walk is one straight
         // step, mirrored at the faces it rebounds from
-        const scalar f = 1 - stepFraction();
-        vector displacement =
-            td.walk() ? f*dispersal_ : f*trackTime*td.velocity(cell());
+        const scalar before = stepFraction();
+        scalar f = 1 - before;
+        vector displacement;
+        if (td.walk())
+        {
+            displacement = f*dispersal_;
+        }
+        else if (td.UInterp())
+        {
+            // Velocity varying within the cell: a segment of at most maxCo
+            // of the cell's length scale, with the velocity at its start
+            const vector s = trackTime*td.velocity(*this);
+            const scalar l = td.cellLength(cell());
+            f = min(f, td.maxCo()*l/max(SMALL*l, mag(s)));
+            displacement = f*s;
+        }
+        else
+        {
+            displacement = f*trackTime*td.velocity(cell());
+        }
         meshTools::constrainDirection(mesh(), solutionD, displacement);
 
         trackToAndHitFace(displacement, f, cloud, td);
 
         // A particle wedged between faces (a corner hit again and again)
         // must not stop the run: hold it for the rest of the step
-        if (stepFraction() > 1 - f)
+        if (stepFraction() > before)
         {
             stalled = 0;
         }

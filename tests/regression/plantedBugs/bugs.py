@@ -191,6 +191,16 @@ BUGS = {
             "        td.reflect(n);\n",
             "case_dispersion",
             "rebound walls: the walk's step not mirrored at the wall"),
+    "B44": (M + "coagulationParticle/coagulationParticle.C",
+            "            const vector s = trackTime*td.velocity(*this);\n",
+            "            const vector s = 0.95*trackTime*td.velocity(*this);\n",
+            "case_channels",
+            "interpolated velocity: particles 5 % slow"),
+    "B45": (M + "submodels/transportModels/frozenFlow/frozenFlow.C",
+            "        threadTd.setInterpolation(td.UInterp(), maxCo_, &cellLength_);\n",
+            "",
+            "case_channels",
+            "interpolated velocity: the threads move with the cell value"),
 }
 
 

@@ -9,6 +9,7 @@
 #include "coagulationCloud.H"
 #include "caseChecks.H"
 #include "registerSwitch.H"
+#include "interpolation.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -43,9 +44,55 @@ Foam::transportModels::frozenFlow::frozenFlow
 )
 :
     transportModel(cloud),
-    outcome_()
+    outcome_(),
+    scheme_("cell"),
+    maxCo_(0.3),
+    UInterp_(),
+    cellLength_()
 {
-    caseChecks::keywords(dict, {"type"});
+    caseChecks::keywords(dict, {"type", "interpolationSchemes", "maxCo"});
+
+    // The velocity's interpolation, as a KinematicCloud's
+    // solution/interpolationSchemes names it
+    if (dict.found("interpolationSchemes"))
+    {
+        const dictionary& schemes = dict.subDict("interpolationSchemes");
+        caseChecks::keywords(schemes, {"U"});
+        scheme_ = schemes.get<word>("U");
+        if
+        (
+            !interpolation<vector>::dictionaryConstructorTablePtr_
+                ->found(scheme_)
+        )
+        {
+            FatalIOErrorInFunction(schemes)
+                << "Entry 'U' of " << schemes.name() << " is '" << scheme_
+                << "'; valid interpolation schemes are "
+                << interpolation<vector>::dictionaryConstructorTablePtr_
+                   ->sortedToc()
+                << nl << exit(FatalIOError);
+        }
+    }
+    if (dict.found("maxCo"))
+    {
+        maxCo_ = caseChecks::positive(dict, "maxCo");
+        if (maxCo_ > 1)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'maxCo' = " << maxCo_ << " in " << dict.name()
+                << " must be in (0, 1]" << nl << exit(FatalIOError);
+        }
+    }
+    if (scheme_ != "cell")
+    {
+        cellLength_ = cbrt(cloud.mesh().V().field());
+    }
+    Info<< "Transport: velocity interpolation " << scheme_;
+    if (scheme_ != "cell")
+    {
+        Info<< ", segments of at most maxCo " << maxCo_ << " of a cell";
+    }
+    Info<< endl;
 }
 
 
@@ -94,6 +141,7 @@ void Foam::transportModels::frozenFlow::moveOnThreads
             cloud_.patchInteraction().stick()
         );
         threadTd.setWalk(td.walk());
+        threadTd.setInterpolation(td.UInterp(), maxCo_, &cellLength_);
 
         #pragma omp for schedule(dynamic, 4096)
         for (label k = 0; k < nParticles; ++k)
@@ -172,6 +220,14 @@ void Foam::transportModels::frozenFlow::move
         cloud_.patchInteraction().stick()
     );
     cloud_.index().invalidateSort();
+    if (scheme_ != "cell")
+    {
+        if (!UInterp_ || &UInterp_->psi() != &U)
+        {
+            UInterp_ = interpolation<vector>::New(scheme_, U);
+        }
+        td.setInterpolation(UInterp_.get(), maxCo_, &cellLength_);
+    }
 
     // Advection with U, then (operator splitting within the transport) the
     // random walk of the dispersion model: each a pass over all particles
