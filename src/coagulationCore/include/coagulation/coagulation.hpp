@@ -20,5 +20,6 @@
 #include "coagulation/ParticleType.hpp"
 #include "coagulation/Rng.hpp"
 #include "coagulation/SumTree.hpp"
+#include "coagulation/SizeDistribution.hpp"
 
 #endif
