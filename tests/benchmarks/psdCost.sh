@@ -47,6 +47,10 @@ c="$workDir/psdCost_with1"
 bytes=$(du -sb "$c/postProcessing/psd" | awk '{print $1}')
 echo "bytes written by the function (postProcessing/psd): $bytes"
 ls -l "$c"/postProcessing/psd/*/
+for i in $(seq 1 "$pairs"); do
+    grep "wall time in the function" "$workDir/psdCost_with$i/log.coagulationFoam" \
+        | sed "s/^/with$i: /"
+done
 echo "${without[*]}" "|" "${with[*]}" | awk -F'|' '{
     n = split($1, a, " "); split($2, b, " ");
     sa = 0; sb = 0; for (i = 1; i <= n; ++i) { sa += a[i]; sb += b[i]; r[i] = b[i]/a[i] - 1 }

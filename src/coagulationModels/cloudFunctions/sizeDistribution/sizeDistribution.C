@@ -209,7 +209,9 @@ Foam::cloudFunctions::sizeDistribution::sizeDistribution
     series_(),
     writer_(),
     file_(),
-    values_()
+    values_(),
+    seconds_(0),
+    nSamples_(0)
 {
     const Time& runTime = cloud.pMesh().time();
 
@@ -373,6 +375,7 @@ void Foam::cloudFunctions::sizeDistribution::sample()
     {
         return;
     }
+    const auto start = std::chrono::steady_clock::now();
 
     // The particles are sorted by cell (momentFields' postStep, before)
     const cellParticleIndex& index = cloud_.index();
@@ -430,6 +433,11 @@ void Foam::cloudFunctions::sizeDistribution::sample()
     {
         writer_->append(runTime.value(), values_);
     }
+    ++nSamples_;
+    seconds_ += std::chrono::duration<double>
+    (
+        std::chrono::steady_clock::now() - start
+    ).count();
 }
 
 
@@ -547,11 +555,31 @@ void Foam::cloudFunctions::sizeDistribution::flush()
 
 void Foam::cloudFunctions::sizeDistribution::write()
 {
-    if (Pstream::master())
+    const auto start = std::chrono::steady_clock::now();
+    // Before timeStart there is nothing to average
+    if (Pstream::master() && nSamples_ > 0)
     {
         writeAverages();
         flush();
     }
+    seconds_ += std::chrono::duration<double>
+    (
+        std::chrono::steady_clock::now() - start
+    ).count();
+}
+
+
+void Foam::cloudFunctions::sizeDistribution::end()
+{
+    const auto start = std::chrono::steady_clock::now();
+    flush();
+    seconds_ += std::chrono::duration<double>
+    (
+        std::chrono::steady_clock::now() - start
+    ).count();
+    Info<< "Size distribution " << name_ << ": " << nSamples_
+        << " samples, wall time in the function " << seconds_ << " s"
+        << " (this processor)" << nl << endl;
 }
 
 
