@@ -250,10 +250,12 @@ def figures(runs, out, u=1.0, x_inlet=0.0, labels=None):
 
 
 def check_m0(psd, case, rel_tol=1e-9):
-    """The PSD's sum (bins, underflow and overflow) against M0 of the same cell from
+    """The PSD's sum (bins, underflow and overflow) against M0 of the same cells from
     the moment samples (postProcessing/coagulationSamples, the momentFields path),
-    averaged over the sample times both have, for every probe region (the cell whose
-    centre is nearest the probe point).  Returns (ok, lines)."""
+    averaged over the sample times both have: for a probe the cell whose centre is
+    nearest the probe point; for a zone the mean M0 of the cells whose centres lie in
+    the zone's bounding box (regions.csv), which is the zone's M0 for a box-shaped zone
+    of cells of equal volume (the samples hold no volumes).  Returns (ok, lines)."""
     import h5py
 
     files = sorted(glob.glob(os.path.join(case, "postProcessing", "coagulationSamples",
@@ -267,23 +269,27 @@ def check_m0(psd, case, rel_tol=1e-9):
     B = psd["nBins"]
     total = psd["data"][:, :, :B + 2].sum(axis=2)           # [samples][regions]
     ok, lines = True, []
+    common, ia, ib = np.intersect1d(np.round(psd["time"], 9), np.round(t, 9),
+                                    return_indices=True)
+    if common.size == 0:
+        raise InputError("no common sample time of the PSD and the moments")
     for r, name in enumerate(psd["regions"]):
-        if not name.startswith("probe"):
+        if name.startswith("probe"):
+            cells = [int(np.argmin(((cc - psd["centres"][r]) ** 2).sum(axis=1)))]
+        elif psd["box"] is not None:
+            lo, hi = psd["box"][0][r], psd["box"][1][r]
+            cells = list(np.nonzero(np.all((cc > lo) & (cc < hi), axis=1))[0])
+        else:
             continue
-        cell = int(np.argmin(((cc - psd["centres"][r]) ** 2).sum(axis=1)))
-        common, ia, ib = np.intersect1d(np.round(psd["time"], 9), np.round(t, 9),
-                                        return_indices=True)
-        if common.size == 0:
-            raise InputError("no common sample time of the PSD and the moments")
         a = total[ia, r].mean()
-        b = m[ib, cell].mean()
+        b = m[ib][:, cells].mean(axis=1).mean()
         rel = abs(a - b) / max(abs(b), 1e-300)
         good = rel <= rel_tol
         ok = ok and good
-        lines.append("%s: sum of the PSD %.10g, M0 of cell %d %.10g over %d samples: "
+        lines.append("%s: sum of the PSD %.10g, M0 of cell(s) %s %.10g over %d samples: "
                      "relative difference %.2e (tol %.0e) %s"
-                     % (name, a, cell, b, common.size, rel, rel_tol,
-                        "ok" if good else "FAIL"))
+                     % (name, a, ",".join(str(c) for c in cells), b, common.size, rel,
+                        rel_tol, "ok" if good else "FAIL"))
     return ok, lines
 
 
