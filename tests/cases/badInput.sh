@@ -83,6 +83,23 @@ expectFatal initialNoField     "'n0'"             -entry initialPopulation -set 
 expectFatal initialBadTable    "sizeDistribution" -entry initialPopulation -set "{ numberDensity 1e9; sizeDistribution ((1 -0.5)); }"
 expectFatal initialTypo        "numberDensty"     -entry initialPopulation -set "{ numberDensty 1e9; mass 1; }"
 expectFatal initialTooMany     "free memory"      -entry initialPopulation -set "{ numberDensity 1e30; mass 1; }"
+# The user's cloud functions (issue 18: sizeDistribution)
+psdOk="type sizeDistribution; probes ((0.098 0.002 0.002)); bins { type integer; K 30; } timeStart 0.4;"
+expectFatal psdUnknownType     "sizeDist"         -entry cloudFunctions -set "{ psd1 { type sizeDist; } }"
+expectFatal psdNotDict         "not a dictionary" -entry cloudFunctions -set "{ psd1 sizeDistribution; }"
+expectFatal psdTypo            "probs"            -entry cloudFunctions -set "{ psd1 { $psdOk probs ((0.1 0.002 0.002)); } }"
+expectFatal psdProbeOutside    "in no cell"       -entry cloudFunctions -set "{ psd1 { type sizeDistribution; probes ((5 0.002 0.002)); bins { type integer; K 30; } timeStart 0.4; } }"
+expectFatal psdNoRegion        "Neither 'probes'" -entry cloudFunctions -set "{ psd1 { type sizeDistribution; bins { type integer; K 30; } timeStart 0.4; } }"
+expectFatal psdUnknownZone     "flame"            -entry cloudFunctions -set "{ psd1 { $psdOk cellZones (flame); } }"
+expectFatal psdBinType         "linear"           -entry cloudFunctions -set "{ psd1 { type sizeDistribution; probes ((0.098 0.002 0.002)); bins { type linear; K 30; } timeStart 0.4; } }"
+expectFatal psdLogBins         "min < max"        -entry cloudFunctions -set "{ psd1 { type sizeDistribution; probes ((0.098 0.002 0.002)); bins { type log; min 10; max 1; nBins 5; } timeStart 0.4; } }"
+expectFatal psdBinTypo         "nbins"            -entry cloudFunctions -set "{ psd1 { type sizeDistribution; probes ((0.098 0.002 0.002)); bins { type log; min 1; max 100; nbins 5; } timeStart 0.4; } }"
+expectFatal psdZeroK           "'K'"              -entry cloudFunctions -set "{ psd1 { type sizeDistribution; probes ((0.098 0.002 0.002)); bins { type integer; K 0; } timeStart 0.4; } }"
+expectFatal psdMissingBins     "bins"             -entry cloudFunctions -set "{ psd1 { type sizeDistribution; probes ((0.098 0.002 0.002)); timeStart 0.4; } }"
+expectFatal psdSampleInterval  "sampleInterval"   -entry cloudFunctions -set "{ psd1 { $psdOk sampleInterval 1.5e-4; } }"
+expectFatal psdLateStart       "timeStart"        -entry cloudFunctions -set "{ psd1 { type sizeDistribution; probes ((0.098 0.002 0.002)); bins { type integer; K 30; } timeStart 100; } }"
+expectFatal psdDensity         "density"          -entry cloudFunctions -set "{ psd1 { $psdOk density -1; } }"
+expectFatal psdTopTypo         "cloudFunction"    -entry cloudFunction -set "{ psd1 { $psdOk } }"
 file=system/controlDict
 expectFatal endTimeBelowStep   "endTime"          -entry endTime -set 4e-5
 expectFatal courantAboveOne    "deltaT"           -entry deltaT -set 0.01

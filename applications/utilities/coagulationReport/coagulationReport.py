@@ -49,7 +49,7 @@ import sys
 # the post-processing package, <repo>/src/python/coagulationPost
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)),
                                 "..", "..", "..", "src", "python"))
-from coagulationPost import analytic, checks, plots, report  # noqa: E402
+from coagulationPost import analytic, checks, plots, psd, report  # noqa: E402
 from coagulationPost.samples import InputError  # noqa: E402
 
 EXIT_OK, EXIT_CHECK_FAILED, EXIT_INPUT = 0, 1, 2
@@ -82,6 +82,13 @@ def parse_args(argv):
                         "(default: the residence time (x - x_inlet)/u upstream of the cell; "
                         "0: Sokal's automatic window alone)")
     p.add_argument("--no-plots", action="store_true", help="skip the PNG files")
+    p.add_argument("--psd", nargs="*", metavar="NAME", default=None,
+                   help="size distribution functions (cloudFunctions) to report: their "
+                        "time-averaged PSD at every probe/zone against the exact "
+                        "distribution (sizeDistribution.png, sizeDistribution.csv); "
+                        "no NAME: every one found")
+    p.add_argument("--psd-compare", metavar="DIR", default=None,
+                   help="a second case whose PSD of the same NAME is plotted beside")
     g = p.add_argument_group("checks (exit 1 on failure)")
     g.add_argument("--check", action="store_true",
                    help="compare every cell mean with the analytic cell average")
@@ -101,6 +108,13 @@ def parse_args(argv):
     g.add_argument("--check-value-rel-tol", type=float, action="append", metavar="TOL",
                    help="relative tolerance of a --check-value; once for all or once per value "
                         "(default 0.01)")
+    g.add_argument("--check-psd-bins", metavar="A:B", default=None,
+                   help="check the PSD bins A..B (1-based, inclusive) at every region against "
+                        "the exact distribution: at least 85 %% inside the 95 %% intervals, "
+                        "none beyond 4 half-widths/1.96")
+    g.add_argument("--check-psd-m0", action="store_true",
+                   help="check the PSD's sum against M0 of the probe's cell (moment samples), and "
+                        "the solver's CSV averages against the samples")
     args = p.parse_args(argv)
     if args.check_skip_cells < 0:
         p.error("--check-skip-cells must be >= 0")
@@ -136,6 +150,51 @@ def parse_args(argv):
     return args
 
 
+def report_psd(args, out, u, written):
+    """The size distributions of --psd: CSV of the averages, plots, checks."""
+    names = args.psd or psd.function_names(args.case)
+    if not names:
+        raise InputError("--psd: no size distribution under %s/postProcessing" % args.case)
+    ok = True
+    for name in names:
+        p = psd.read(args.case, name)
+        mean, neff, ci, tau = psd.average(p, u=u, x_inlet=args.x_inlet,
+                                          correlation_time=args.correlation_time)
+        ref = psd.exact(p, u, args.x_inlet)
+        path = os.path.join(out, "sizeDistribution_%s.csv" % name)
+        with open(path, "w") as f:
+            f.write("region,name,x,column,mean,neff,tauInt,ci95,exact\n")
+            for r, rn in enumerate(p["regions"]):
+                for j, col in enumerate(p["columns"]):
+                    ex = ref[r, j] if (ref is not None and j < p["nBins"]) else float("nan")
+                    f.write("%d,%s,%.8g,%s,%.10g,%.6g,%.6g,%.6g,%.10g\n"
+                            % (r, rn, p["centres"][r, 0], col, mean[r, j], neff[r, j],
+                               tau[r, j], ci[r, j], ex))
+        written.append(path)
+        if not args.no_plots:
+            runs, labels = [p], [os.path.basename(os.path.abspath(args.case))]
+            if args.psd_compare:
+                runs.append(psd.read(args.psd_compare, name))
+                labels.append(os.path.basename(os.path.abspath(args.psd_compare)))
+            d = os.path.join(out, name)
+            written += psd.figures(runs, d, u, args.x_inlet, labels)
+        if args.check_psd_bins:
+            a, b = (int(v) for v in args.check_psd_bins.split(":"))
+            if ref is None:
+                raise InputError("--check-psd-bins: no exact distribution for kernel %s"
+                                 % p["attrs"].get("kernel"))
+            good, _, lines = psd.check(p, ref, list(range(a - 1, b)), mean, ci)
+            print("\n".join("PSD %s: %s" % (name, l) for l in lines))
+            ok = ok and good
+        if args.check_psd_m0:
+            good, lines = psd.check_m0(p, args.case)
+            more_ok, more = psd.check_csv(p, args.case)
+            good, lines = good and more_ok, lines + more
+            print("\n".join("PSD %s: %s" % (name, l) for l in lines))
+            ok = ok and good
+    return ok
+
+
 def main(argv=None):
     try:  # behave like a normal filter under `| head`
         import signal
@@ -161,6 +220,8 @@ def main(argv=None):
             ok = checks.check_analytic(res, args.check_rel_tol, args.check_skip_cells,
                                        args.check_moments, args.analytic)
         ok = checks.check_values(res, args.value_checks) and ok
+        if args.psd is not None:
+            ok = report_psd(args, out, res["meta"]["u"], written) and ok
     except InputError as e:
         print("coagulationReport: error: %s" % e, file=sys.stderr)
         return EXIT_INPUT

@@ -5,7 +5,8 @@
 Each bug is one exact-string replacement in one file; the old string must occur exactly
 once (a bug whose string is gone after a refactoring is reported, not planted somewhere
 else). B01-B19 are the bugs of the first campaign (on the layout before issue 14's
-submodels), ported to the current files with the same meaning; B20-B28 are new. B14-B17 now
+submodels), ported to the current files with the same meaning; B20-B28 are new; B29-B34
+plant bugs in the size distribution (issue 18): core, cloud function, post-processing. B14-B17 now
 sit in the coagulationPost package (the campaign measured them in the scripts it came from).
 
     bugs.py list                 id, file, targeted tests, what the bug is
@@ -31,6 +32,11 @@ STATS = "src/python/coagulationPost/statistics.py"
 SAMPLES = "src/python/coagulationPost/samples.py"
 CHECKS = "src/python/coagulationPost/checks.py"
 DISPERSION = M + "submodels/dispersionModels/dispersionModel/dispersionModel.C"
+# The size distribution (issue 18): core arithmetic, cloud function, post-processing
+PSDCORE = "src/coagulationCore/src/SizeDistribution.cpp"
+PSDFUNC = M + "cloudFunctions/sizeDistribution/sizeDistribution.C"
+PSDPOST = "src/python/coagulationPost/psd.py"
+ANALYTIC = "src/python/coagulationPost/analytic.py"
 
 # Every targeted run includes the fault and bad-input cases
 ALWAYS = "case_faults|case_badInput"
@@ -201,6 +207,36 @@ BUGS = {
             "",
             "case_channels",
             "interpolated velocity: the threads move with the cell value"),
+    "B29": (PSDCORE,
+            "        d.d43 = s4 / s3;\n",
+            "        d.d43 = s3 / s2;\n",
+            "core.SizeSample",
+            "derived sizes: d43 computed as d32"),
+    "B30": (PSDCORE,
+            "        std::max(2.0 * tau, 1e-3) * g0 / std::max(Nf - 2.0 * double(M) - 1, 1.0);\n",
+            "        1.0 * g0 / std::max(Nf - 2.0 * double(M) - 1, 1.0);\n",
+            "core.CorrelatedMean|case_psdDuct",
+            "PSD intervals (C++): the autocorrelation time ignored, the iid interval"),
+    "B31": (PSDFUNC,
+            "for (label i = cellStart[celli]; i < cellStart[celli + 1]; ++i)",
+            "for (label i = cellStart[celli] + 1; i < cellStart[celli + 1]; ++i)",
+            "case_psdDuct",
+            "sizeDistribution: the first particle of every probe cell left out"),
+    "B32": (PSDFUNC,
+            '"type", "probes", "cellZones", "bins", "timeStart",',
+            '"type", "probes", "probs", "cellZones", "bins", "timeStart",',
+            "case_badInput",
+            "sizeDistribution: the typo 'probs' accepted as a keyword"),
+    "B33": (PSDPOST,
+            '    total = psd["data"][:, :, :B + 2].sum(axis=2)',
+            '    total = psd["data"][:, :, :B + 1].sum(axis=2)',
+            "python_unit|case_psdDuct",
+            "PSD check: the overflow left out of the sum compared with M0"),
+    "B34": (ANALYTIC,
+            "            d[1:K] = 0.5 * K0 * conv\n",
+            "            d[1:K] = K0 * conv\n",
+            "python_unit|case_psdDuct",
+            "exact PSD: constant-kernel gain term without its 1/2"),
 }
 
 

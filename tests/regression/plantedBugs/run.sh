@@ -44,7 +44,7 @@ for b in "${ids[@]}"; do
     git diff -- "$file" > "$logDir/$b.diff"
     status=""
     case "$file" in
-        *.C|*.H)
+        *.C|*.H|*.cpp|*.hpp)
             rebuild=1
             nice -n 10 ./Allwmake > "$logDir/$b.build.log" 2>&1 || status="caught by the build (does not compile)"
             ;;

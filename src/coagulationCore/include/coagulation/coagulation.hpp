@@ -21,5 +21,6 @@
 #include "coagulation/ParticleType.hpp"
 #include "coagulation/Rng.hpp"
 #include "coagulation/SumTree.hpp"
+#include "coagulation/SizeDistribution.hpp"
 
 #endif

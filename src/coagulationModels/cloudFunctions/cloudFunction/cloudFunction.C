@@ -13,6 +13,7 @@ namespace Foam
 {
     defineTypeNameAndDebug(cloudFunction, 0);
     defineRunTimeSelectionTable(cloudFunction, cloud);
+    defineRunTimeSelectionTable(cloudFunction, dictionary);
 }
 
 
@@ -45,6 +46,33 @@ Foam::autoPtr<Foam::cloudFunction> Foam::cloudFunction::New
     }
 
     return autoPtr<cloudFunction>(cstrIter()(cloud));
+}
+
+
+Foam::autoPtr<Foam::cloudFunction> Foam::cloudFunction::New
+(
+    const word& name,
+    const dictionary& dict,
+    coagulationCloud& cloud
+)
+{
+    const word functionType(dict.get<word>("type"));
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(functionType);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInLookup
+        (
+            dict,
+            "cloudFunction",
+            functionType,
+            *dictionaryConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+
+    Info<< "Cloud function " << name << " (" << functionType << ")" << endl;
+    return autoPtr<cloudFunction>(cstrIter()(name, dict, cloud));
 }
 
 

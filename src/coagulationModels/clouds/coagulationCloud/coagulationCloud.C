@@ -104,7 +104,7 @@ Foam::coagulationCloud::coagulationCloud
             "algorithm", "kernel", "inception", "inflow", "transport",
             "statisticalWeight", "seed", "sampling", "numberControl",
             "splitting", "patchInteraction", "dispersion",
-            "initialPopulation"
+            "initialPopulation", "cloudFunctions"
         }
     );
 
@@ -209,6 +209,25 @@ Foam::coagulationCloud::coagulationCloud
     for (const char* f : {"momentFields", "momentSampler", "massBalance"})
     {
         functions_.append(cloudFunction::New(f, *this));
+    }
+
+    // The user's functions (sizeDistribution), after the moment fields:
+    // their postStep finds the particles sorted by cell
+    if (properties_.found("cloudFunctions"))
+    {
+        const dictionary& dict = properties_.subDict("cloudFunctions");
+        for (const entry& e : dict)
+        {
+            if (!e.isDict())
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Entry '" << e.keyword() << "' of " << dict.name()
+                    << " is not a dictionary: every cloud function is"
+                    << " name { type <type>; ... }" << nl
+                    << exit(FatalIOError);
+            }
+            functions_.append(cloudFunction::New(e.keyword(), e.dict(), *this));
+        }
     }
 
     Info<< "Coagulation cloud " << cloudName << ": "
