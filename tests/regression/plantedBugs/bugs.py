@@ -5,7 +5,8 @@
 Each bug is one exact-string replacement in one file; the old string must occur exactly
 once (a bug whose string is gone after a refactoring is reported, not planted somewhere
 else). B01-B19 are the bugs of the first campaign (on the layout before issue 14's
-submodels), ported to the current files with the same meaning; B20-B28 are new. B14-B17 now
+submodels), ported to the current files with the same meaning; B20-B28 are new; B29-B31
+plant bugs in the field-driven sources (issue 15 item 5). B14-B17 now
 sit in the coagulationPost package (the campaign measured them in the scripts it came from).
 
     bugs.py list                 id, file, targeted tests, what the bug is
@@ -169,6 +170,22 @@ BUGS = {
             "    td.resetReflection();\n", "",
             "case_submodels|case_constantDuct_SWA|case_transport",
             "wall rebound: the reflection not reset per move (carried to the next particle)"),
+    # Field-driven sources (issue 15 item 5): one bug per new test
+    "B29": (M + "submodels/inceptionModels/fieldInception/fieldInception.H",
+            "            return cellRates_[celli];\n",
+            "            return core().rate;\n",
+            "case_fieldSources",
+            "field inception: every cell with a rate incepts at the field's largest"),
+    "B30": (M + "submodels/coagulationKernels/localSaffmanTurner/localSaffmanTurner.C",
+            "        const scalar K0c = K0()*std::sqrt(epsilon[celli]/nuc);\n",
+            "        const scalar K0c = K0()*std::sqrt(epsilon[0]/nuc);\n",
+            "case_fieldSources",
+            "localSaffmanTurner: the first cell's epsilon in every cell"),
+    "B31": (M + "clouds/caseChecks/caseChecks.C",
+            "        if (!std::isfinite(v) || !(v >= 0) || (positive && !(v > 0)))\n",
+            "        if (!std::isfinite(v) || (positive && !(v > 0)))\n",
+            "case_badInput",
+            "cellField: negative values of a submodel's field accepted"),
 }
 
 
