@@ -105,6 +105,28 @@ expectFatal endTimeBelowStep   "endTime"          -entry endTime -set 4e-5
 expectFatal courantAboveOne    "deltaT"           -entry deltaT -set 0.01
 file=constant/coagulationProperties
 
+# Field-driven sources (issue 15 item 5): fields in the start time of the base case, a
+# rate field negative in cell 7 and a positive epsilon; no constant/transportProperties
+"$COAGULATIONFOAM_PYTHON" - "$base" <<'PY'
+import sys
+for name, dims, values in (("inceptionRate", "[0 -3 -1 0 0 0 0]", ["1e8"] * 7 + ["-1"] + ["1e8"] * 42),
+                           ("epsilon", "[0 2 -3 0 0 0 0]", ["1e-3"] * 50)):
+    with open("%s/0/%s" % (sys.argv[1], name), "w") as f:
+        f.write("FoamFile { version 2.0; format ascii; class volScalarField; object %s; }\n" % name)
+        f.write("dimensions %s;\ninternalField nonuniform List<scalar> 50 (%s);\n" % (dims, " ".join(values)))
+        f.write('boundaryField { ".*" { type zeroGradient; } sides { type empty; } }\n')
+PY
+expectFatal missingRateField   "model 'field'.*'sootRate'.*0/sootRate" -entry inception -set "{ type field; field sootRate; mass 1; }"
+expectFatal negativeRateField  "'inceptionRate' in .*0/inceptionRate.*negative value -1 in cell 7" -entry inception -set "{ type field; field inceptionRate; mass 1; }"
+expectFatal typoFieldInception "fild"             -entry inception -set "{ type field; fild inceptionRate; mass 1; }"
+expectFatal rateWithField      "Unknown entry 'rate'" -entry inception -set "{ type field; field inceptionRate; rate 3e8; mass 1; }"
+expectFatal missingEpsilon     "localSaffmanTurner.*'epsilonMean'.*0/epsilonMean" -entry kernel -set "{ type localSaffmanTurner; coefficient 1e-7; epsilon epsilonMean; nu 1e-5; }"
+expectFatal missingNuField     "localSaffmanTurner.*'nuField'.*0/nuField" -entry kernel -set "{ type localSaffmanTurner; coefficient 1e-7; nu nuField; }"
+expectFatal missingTransport   "localSaffmanTurner.*constant/transportProperties" -entry kernel -set "{ type localSaffmanTurner; coefficient 1e-7; }"
+expectFatal typoLocalKernel    "epsilom"          -entry kernel -set "{ type localSaffmanTurner; coefficient 1e-7; nu 1e-5; epsilom epsilon; }"
+expectFatal negativeCoefficient "coefficient"     -entry kernel -set "{ type localSaffmanTurner; coefficient -1; nu 1e-5; }"
+expectFatal negativeNu         "nu = -1.*entry 'nu'" -entry kernel -set "{ type localSaffmanTurner; coefficient 1e-7; nu -1e-5; }"
+
 (cd "$base" && foamDictionary constant/coagulationProperties -entry algorithm -set DSA1 > /dev/null)
 expectFatal dsaNumberControl   "maxParticlesPerCell" -entry numberControl -set "{ maxParticlesPerCell 100; }"
 

@@ -426,6 +426,43 @@ TEST_P(CellAlgorithmTest, KernelGivenPerCallActsAsBuiltIn)
     EXPECT_GT(sa.coagulations, 100u);
 }
 
+//- A cell's own inception rate given to advance() (the OpenFOAM layer's field inception):
+//  the step is exactly the step of an algorithm built with that rate, whatever rate the
+//  algorithm was built with; rate 0 incepts nothing; a negative or non-finite rate throws.
+TEST_P(CellAlgorithmTest, InceptionRateGivenPerCallActsAsBuiltIn)
+{
+    auto kernel = makeKernel("constant", 1.0);
+    InceptionModel built, other;
+    built.type.mass = other.type.mass = 1.0;
+    built.rate = 50.0;
+    other.rate = 700.0;
+    auto general = makeCellAlgorithm(GetParam(), *kernel, built);
+    auto withOther = makeCellAlgorithm(GetParam(), *kernel, other);
+    CellPopulation a = monodisperse(100, 4.0);
+    CellPopulation b = a;
+    Rng ra(78), rb(78);
+    StepStatistics sa, sb;
+    for (int step = 0; step < 3; ++step) {
+        general->advance(a, *kernel, other.rate, 0.05, ra, sa);
+        withOther->advance(b, 0.05, rb, sb);
+        ASSERT_EQ(a.particles.size(), b.particles.size());
+        for (std::size_t j = 0; j < a.particles.size(); ++j) {
+            ASSERT_EQ(a.particles[j].type.mass, b.particles[j].type.mass) << j;
+            ASSERT_EQ(a.particles[j].weight, b.particles[j].weight) << j;
+        }
+    }
+    EXPECT_EQ(sa.inceptions, sb.inceptions);
+    EXPECT_GT(sa.inceptions, 200u);
+
+    StepStatistics none;
+    general->advance(a, *kernel, 0.0, 0.05, ra, none);
+    EXPECT_EQ(none.inceptions, 0u);
+    EXPECT_GT(none.coagulations, 0u);
+    EXPECT_THROW(general->advance(a, *kernel, -1.0, 0.05, ra, none), std::invalid_argument);
+    EXPECT_THROW(general->advance(a, *kernel, std::nan(""), 0.05, ra, none),
+                 std::invalid_argument);
+}
+
 //- Number control is unbiased but not conservative: every halving's change of sum(w m) is
 //  booked in controlMass, so that a mass balance closes to round-off.
 //  (SWA: DSA halving halves the sample volume instead, and the layer refuses it.)

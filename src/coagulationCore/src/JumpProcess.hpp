@@ -37,16 +37,18 @@ public:
     std::string name() const override { return Jump::name; }
 
     using CellAlgorithm::advance;
-    void advance(CellPopulation& pop, const CoagulationKernel& kernel, double dt, Rng& rng,
-                 StepStatistics& stats) override;
+    void advance(CellPopulation& pop, const CoagulationKernel& kernel, double inceptionRate,
+                 double dt, Rng& rng, StepStatistics& stats) override;
+
+    const InceptionModel& inception() const override { return inception_; }
 
     std::size_t workspaceBytes() const override { return sampler_.memoryBytes(); }
 
 private:
     //- DSA's doubling applies in closed cells only (see NumberControl.hpp)
-    bool closedControl() const
+    bool closedControl(double inceptionRate) const
     {
-        return Jump::equalWeights && control_.minParticles > 0 && inception_.rate == 0.0;
+        return Jump::equalWeights && control_.minParticles > 0 && inceptionRate == 0.0;
     }
 
     void halve(CellPopulation& pop, Rng& rng, StepStatistics& stats)
@@ -62,15 +64,17 @@ private:
     }
 
     //- The common weight of a DSA population (checked), or the inception weight
-    double commonWeight(const std::vector<Particle>& P) const;
+    double commonWeight(const std::vector<Particle>& P, double inceptionRate) const;
 
     static std::string who() { return std::string("coag::") + Jump::name + "::advance"; }
 
-    //- dt >= 0 and a positive volume, else std::invalid_argument
-    static void checkArguments(const CellPopulation& pop, double dt);
+    //- dt >= 0, a positive volume and a finite inception rate >= 0, else
+    //  std::invalid_argument
+    static void checkArguments(const CellPopulation& pop, double inceptionRate, double dt);
 
     //- Room for the particles and the inceptions expected over dt (mean + 5 sd + 16)
-    std::size_t expectedCapacity(const CellPopulation& pop, double dt) const;
+    std::size_t expectedCapacity(const CellPopulation& pop, double inceptionRate,
+                                 double dt) const;
 
     //- A finite rate, and not more than maxExpectedEvents in the rest of the step
     static void checkRate(double totalRate, double remaining, const CellPopulation& pop);
@@ -86,7 +90,8 @@ private:
 };
 
 template <class Jump>
-double JumpProcess<Jump>::commonWeight(const std::vector<Particle>& P) const
+double JumpProcess<Jump>::commonWeight(const std::vector<Particle>& P,
+                                       double inceptionRate) const
 {
     if (P.empty()) return inception_.weight;
     const double w = P.front().weight;
@@ -98,7 +103,7 @@ double JumpProcess<Jump>::commonWeight(const std::vector<Particle>& P) const
             throw std::invalid_argument(who() + ": DSA requires all particle weights to be equal");
         }
     }
-    if (inception_.rate > 0.0 && w != inception_.weight) {
+    if (inceptionRate > 0.0 && w != inception_.weight) {
         throw std::invalid_argument(who() + ": DSA with inception requires the particle weights "
                                             "to equal the inception weight");
     }
@@ -106,8 +111,14 @@ double JumpProcess<Jump>::commonWeight(const std::vector<Particle>& P) const
 }
 
 template <class Jump>
-void JumpProcess<Jump>::checkArguments(const CellPopulation& pop, double dt)
+void JumpProcess<Jump>::checkArguments(const CellPopulation& pop, double inceptionRate,
+                                       double dt)
 {
+    if (!(inceptionRate >= 0.0) || !std::isfinite(inceptionRate)) {
+        std::ostringstream os;
+        os << who() << ": inception rate must be finite and >= 0, got " << inceptionRate;
+        throw std::invalid_argument(os.str());
+    }
     if (!(dt >= 0.0) || !std::isfinite(dt)) {
         std::ostringstream os;
         os << who() << ": dt must be finite and >= 0, got " << dt;
@@ -121,10 +132,11 @@ void JumpProcess<Jump>::checkArguments(const CellPopulation& pop, double dt)
 }
 
 template <class Jump>
-std::size_t JumpProcess<Jump>::expectedCapacity(const CellPopulation& pop, double dt) const
+std::size_t JumpProcess<Jump>::expectedCapacity(const CellPopulation& pop, double inceptionRate,
+                                                double dt) const
 {
     const std::size_t n = pop.particles.size();
-    const double expected = inception_.rate / inception_.weight * pop.volume * dt;
+    const double expected = inceptionRate / inception_.weight * pop.volume * dt;
     if (!(expected > 0.0)) return n;
     double extra = expected + 5.0 * std::sqrt(expected) + 16.0;
     extra = std::min(extra, 16777216.0);
@@ -171,31 +183,32 @@ bool JumpProcess<Jump>::accepted(const ParticleType& z1, const ParticleType& z2,
 }
 
 template <class Jump>
-void JumpProcess<Jump>::advance(CellPopulation& pop, const CoagulationKernel& kernel, double dt,
-                                Rng& rng, StepStatistics& stats)
+void JumpProcess<Jump>::advance(CellPopulation& pop, const CoagulationKernel& kernel,
+                                double inceptionRate, double dt, Rng& rng,
+                                StepStatistics& stats)
 {
-    checkArguments(pop, dt);
+    checkArguments(pop, inceptionRate, dt);
     if (&kernel != &sampler_.kernel()) sampler_.configure(kernel, who());
     std::vector<Particle>& P = pop.particles;
-    const double w = Jump::equalWeights ? commonWeight(P) : 0.0;
+    const double w = Jump::equalWeights ? commonWeight(P, inceptionRate) : 0.0;
 
     // Number control on entry (the caller may have moved particles in or out).
     while (control_.maxParticles > 0 && P.size() > control_.maxParticles) {
         halvePopulation(pop, Jump::equalWeights, rng, stats);
     }
-    if (closedControl()) {
+    if (closedControl(inceptionRate)) {
         while (!P.empty() && P.size() < control_.minParticles) duplicatePopulation(pop, stats);
     }
 
     // Room for the expected inceptions, so that no event allocates.
-    const std::size_t capacity = expectedCapacity(pop, dt);
+    const std::size_t capacity = expectedCapacity(pop, inceptionRate, dt);
     P.reserve(capacity);
     sampler_.build(P, capacity);
 
     // Pair rates summed over ordered pairs: SWA K w2 / V (eq 22; w2 inside the sampler's
     // second factors), DSA K w / (2V) (each unordered pair at K w / V, eqs 12, 16-17).
     const double pairFactor = Jump::equalWeights ? 0.5 * w : 1.0;
-    const double inceptionPerVolume = inception_.rate / inception_.weight;
+    const double inceptionPerVolume = inceptionRate / inception_.weight;
     double t = 0.0;
 
     for (;;) {
@@ -233,7 +246,7 @@ void JumpProcess<Jump>::advance(CellPopulation& pop, const CoagulationKernel& ke
         }
         ++stats.coagulations;
         jump_.coagulate(pop, j1, j2, rng, sampler_);  // the algorithm's jump
-        if (closedControl()) {
+        if (closedControl(inceptionRate)) {
             while (!P.empty() && P.size() < control_.minParticles) duplicate(pop, stats);
         }
     }

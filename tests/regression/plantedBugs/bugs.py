@@ -6,7 +6,9 @@ Each bug is one exact-string replacement in one file; the old string must occur 
 once (a bug whose string is gone after a refactoring is reported, not planted somewhere
 else). B01-B19 are the bugs of the first campaign (on the layout before issue 14's
 submodels), ported to the current files with the same meaning; B20-B28 are new; B29-B34
-plant bugs in the size distribution (issue 18): core, cloud function, post-processing. B14-B17 now
+plant bugs in the size distribution (issue 18): core, cloud function, post-processing;
+B35-B37 in the field-driven sources (issue 15 item 5); B40-B46 in the random walk and the
+velocity interpolation (issue 15). B14-B17 now
 sit in the coagulationPost package (the campaign measured them in the scripts it came from).
 
     bugs.py list                 id, file, targeted tests, what the bug is
@@ -153,9 +155,9 @@ BUGS = {
             "        patches_[i] = boundary.findPatchID(patchNames[0]);\n",
             "case_submodels|case_inflow|case_transport|case_restart",
             "inflow patch selection: every listed patch resolved to the first"),
-    "B24": (M + "clouds/cellStepper/cellStepper.C",
-            "        cloud_.inception().core().rate > 0 && cloud_.inception().incepts(celli);\n",
-            "        cloud_.inception().core().rate > 0;\n",
+    "B24": (M + "submodels/inceptionModels/inceptionModel/inceptionModel.H",
+            "            return incepts(celli) ? core_.rate : 0;\n",
+            "            return core_.rate;\n",
             "case_submodels|case_transport|case_streams|case_constantDuct_SWA",
             "cellZone inception: every cell incepts, the zone ignored"),
     "B25": (M + "clouds/cellParticleIndex/cellParticleIndex.C",
@@ -206,6 +208,22 @@ BUGS = {
             "            d[1:K] = K0 * conv\n",
             "python_unit|case_psdDuct",
             "exact PSD: constant-kernel gain term without its 1/2"),
+    # Field-driven sources (issue 15 item 5): one bug per new test
+    "B35": (M + "submodels/inceptionModels/fieldInception/fieldInception.H",
+            "            return cellRates_[celli];\n",
+            "            return core().rate;\n",
+            "case_fieldSources",
+            "field inception: every cell with a rate incepts at the field's largest"),
+    "B36": (M + "submodels/coagulationKernels/localSaffmanTurner/localSaffmanTurner.C",
+            "        const scalar K0c = K0()*std::sqrt(epsilon[celli]/nuc);\n",
+            "        const scalar K0c = K0()*std::sqrt(epsilon[0]/nuc);\n",
+            "case_fieldSources",
+            "localSaffmanTurner: the first cell's epsilon in every cell"),
+    "B37": (M + "clouds/caseChecks/caseChecks.C",
+            "        if (!std::isfinite(v) || !(v >= 0) || (positive && !(v > 0)))\n",
+            "        if (!std::isfinite(v) || (positive && !(v > 0)))\n",
+            "case_badInput",
+            "cellField: negative values of a submodel's field accepted"),
     # The random walk (issue 15); numbered from B40 so that other branches' bugs keep theirs
     "B40": (DISPERSION,
             "        drift*dt + sqrt(2*D*dt)*vector(xi[0], xi[1], xi[2]);\n",

@@ -44,7 +44,9 @@ namespace coag {
 //  The algorithm object keeps a reference to its default kernel (which must outlive it) and
 //  reusable work buffers: use one object per thread (kernels are stateless and shareable).
 //  advance() may be given another kernel per call (a cell's own kernel, e.g. of its
-//  temperature); the majorant layout is then taken from that kernel for the call.
+//  temperature); the majorant layout is then taken from that kernel for the call. It may be
+//  given the cell's own inception rate too (a source read from a field); the incepted type
+//  and weight stay the algorithm's.
 class CellAlgorithm {
 public:
     explicit CellAlgorithm(const CoagulationKernel& kernel) : kernel_(kernel) {}
@@ -64,16 +66,30 @@ public:
     //  overflow) or when the events still expected in the step, rate*(dt - t), exceed
     //  maxExpectedEvents (a kernel, inception rate or dt far too large: the step would not
     //  end in any useful time).
-    virtual void advance(CellPopulation& pop, const CoagulationKernel& kernel, double dt,
-                         Rng& rng, StepStatistics& stats) = 0;
+    //  The inception rate is the algorithm's (InceptionModel::rate).
+    void advance(CellPopulation& pop, const CoagulationKernel& kernel, double dt, Rng& rng,
+                 StepStatistics& stats)
+    {
+        advance(pop, kernel, inception().rate, dt, rng, stats);
+    }
 
-    //- The same with the algorithm's own kernel
+    //- The same with the cell's own inception rate (physical particles per unit volume and
+    //  time; finite and >= 0, else std::invalid_argument) in place of inception().rate: 0
+    //  incepts nothing. The incepted type and weight are inception()'s; DSA's closed-cell
+    //  doubling applies where this rate is 0.
+    virtual void advance(CellPopulation& pop, const CoagulationKernel& kernel,
+                         double inceptionRate, double dt, Rng& rng, StepStatistics& stats) = 0;
+
+    //- The same with the algorithm's own kernel and inception rate
     void advance(CellPopulation& pop, double dt, Rng& rng, StepStatistics& stats)
     {
-        advance(pop, kernel_, dt, rng, stats);
+        advance(pop, kernel_, inception().rate, dt, rng, stats);
     }
 
     const CoagulationKernel& kernel() const { return kernel_; }
+
+    //- The inception it was constructed with
+    virtual const InceptionModel& inception() const = 0;
 
     //- Bytes of reusable work memory (the sum tree) currently held; for diagnostics.
     virtual std::size_t workspaceBytes() const { return 0; }

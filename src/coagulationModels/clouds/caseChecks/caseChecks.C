@@ -67,6 +67,72 @@ Foam::scalar Foam::caseChecks::nonNegative
 }
 
 
+Foam::autoPtr<Foam::volScalarField> Foam::caseChecks::cellField
+(
+    const dictionary& dict,
+    const word& model,
+    const word& entry,
+    const word& fieldName,
+    const fvMesh& mesh,
+    const dimensionSet& dims,
+    const bool positive
+)
+{
+    IOobject io
+    (
+        fieldName,
+        mesh.time().timeName(),
+        mesh,
+        IOobject::MUST_READ,
+        IOobject::AUTO_WRITE
+    );
+    if (!io.typeHeaderOk<volScalarField>(true))
+    {
+        FatalIOErrorInFunction(dict)
+            << "The " << model << " (" << dict.name() << ") reads the field '"
+            << fieldName << "' (entry '" << entry << "'), but there is no file "
+            << io.objectPath() << nl
+            << "    Put the field in the start time, or name another one"
+            << nl << exit(FatalIOError);
+    }
+
+    autoPtr<volScalarField> fieldPtr
+    (
+        withTrapsHeld
+        (
+            [&]() { return autoPtr<volScalarField>::New(io, mesh); }
+        )
+    );
+    const volScalarField& f = *fieldPtr;
+
+    if (f.dimensions() != dims)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Field '" << fieldName << "' in " << f.objectPath()
+            << " (the " << model << " of " << dict.name() << ") has dimensions "
+            << f.dimensions() << "; it must have " << dims << nl
+            << exit(FatalIOError);
+    }
+
+    forAll(f, celli)
+    {
+        const scalar v = f[celli];
+        if (!std::isfinite(v) || !(v >= 0) || (positive && !(v > 0)))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Field '" << fieldName << "' in " << f.objectPath()
+                << " (the " << model << " of " << dict.name() << ") has the "
+                << (std::isfinite(v) ? (v < 0 ? "negative " : "") : "non-finite ")
+                << "value " << v << " in cell " << celli << "; it must be "
+                << (positive ? "positive" : "finite and not negative")
+                << " in every cell" << nl << exit(FatalIOError);
+        }
+    }
+
+    return fieldPtr;
+}
+
+
 void Foam::caseChecks::velocity(const volVectorField& U)
 {
     auto check = [&U](const vectorField& values, const word& where)

@@ -55,8 +55,8 @@ void Foam::cellStepper::advanceCell
     const cellParticleIndex& index = cloud_.index();
     const label start = index.cellStart()[celli];
     const label np = index.cellStart()[celli + 1] - start;
-    const bool incepts =
-        cloud_.inception().core().rate > 0 && cloud_.inception().incepts(celli);
+    const scalar inceptionRate = cloud_.inception().cellRate(celli);
+    const bool incepts = inceptionRate > 0;
 
     // Without inception a cell needs a pair to change
     if (np < 2 && !incepts)
@@ -84,7 +84,7 @@ void Foam::cellStepper::advanceCell
     {
         const caseChecks::trapsHeld traps;
         (incepts ? w.algorithm : w.algorithmNoInception)
-            ->advance(celli, population, dt, w.rng, w.events);
+            ->advance(celli, population, inceptionRate, dt, w.rng, w.events);
     }
     outcome.events = w.events;
 

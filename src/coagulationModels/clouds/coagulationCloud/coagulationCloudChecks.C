@@ -98,15 +98,13 @@ void Foam::coagulationCloud::checkExpectedSize(const volVectorField& U) const
     }
 
     const Time& runTime = mesh_.time();
-    scalar inceptionVolume = 0;
+    // Physical particles incepted per unit time (each cell at its own rate)
+    scalar inceptionRate = 0;
     forAll(mesh_.V(), celli)
     {
-        if (inception_->incepts(celli))
-        {
-            inceptionVolume += mesh_.V()[celli];
-        }
+        inceptionRate += inception_->cellRate(celli)*mesh_.V()[celli];
     }
-    reduce(inceptionVolume, sumOp<scalar>());
+    reduce(inceptionRate, sumOp<scalar>());
 
     scalar outflow = 0;
     forAll(mesh_.boundaryMesh(), patchi)
@@ -134,7 +132,7 @@ void Foam::coagulationCloud::checkExpectedSize(const volVectorField& U) const
     }
 
     scalar expected =
-        inception_->core().rate*inceptionVolume*residence
+        inceptionRate*residence
        /scaling_.particleWeight();
     const label maxPerCell = label(algorithm_->control().maxParticles);
     if (maxPerCell > 0)

@@ -26,9 +26,11 @@ Foam::coagulationKernel::coagulationKernel
     const std::string& coreName
 )
 :
-    K0_(dict.get<scalar>("K0")),
+    K0_(0),
     core_()
 {
+    caseChecks::keywords(dict, {"type", "K0"});
+    K0_ = dict.get<scalar>("K0");
     if (!(K0_ > 0) || !std::isfinite(K0_))
     {
         FatalIOErrorInFunction(dict)
@@ -41,15 +43,25 @@ Foam::coagulationKernel::coagulationKernel
 }
 
 
+Foam::coagulationKernel::coagulationKernel
+(
+    const scalar K0,
+    std::unique_ptr<coag::CoagulationKernel> core
+)
+:
+    K0_(K0),
+    core_(std::move(core))
+{}
+
+
 // * * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
 
 Foam::autoPtr<Foam::coagulationKernel> Foam::coagulationKernel::New
 (
     const dictionary& dict,
-    const polyMesh& mesh
+    const fvMesh& mesh
 )
 {
-    caseChecks::keywords(dict, {"type", "K0"});
     const word kernelType(dict.get<word>("type"));
 
     Info<< "Selecting coagulation kernel " << kernelType << endl;

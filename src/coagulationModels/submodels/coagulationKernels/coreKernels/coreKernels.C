@@ -11,7 +11,9 @@ Description
       additive        K = K0 (x + y)                   (paper §3.2)
       multiplicative  K = K0 x y                       (gels at finite time)
       saffmanTurner   K = K0 (x^(1/3) + y^(1/3))^3     (KSW eq. 1.2)
-    The formulas and their majorants are coag::CoagulationKernel's.
+    The formulas and their majorants are coag::CoagulationKernel's. The
+    Saffman-Turner kernel of each cell's dissipation rate is
+    localSaffmanTurner (its own folder).
 
 \*---------------------------------------------------------------------------*/
 
@@ -28,7 +30,7 @@ Description
     {                                                                          \
     public:                                                                    \
         TypeName(#Name);                                                       \
-        Name##Kernel(const dictionary& dict, const polyMesh&)                  \
+        Name##Kernel(const dictionary& dict, const fvMesh&)                    \
         :                                                                      \
             coagulationKernel(dict, #Name)                                     \
         {}                                                                     \

@@ -23,15 +23,20 @@ Foam::inceptionModel::inceptionModel
 (
     const dictionary& dict,
     const scalar particleWeight,
-    const wordList& keywords
+    const wordList& keywords,
+    const bool rateEntry
 )
 :
     core_()
 {
-    wordList valid({"type", "rate", "mass"});
+    wordList valid({"type", "mass"});
+    if (rateEntry)
+    {
+        valid.append("rate");
+    }
     valid.append(keywords);
     caseChecks::keywords(dict, valid);
-    core_.rate = caseChecks::nonNegative(dict, "rate");
+    core_.rate = rateEntry ? caseChecks::nonNegative(dict, "rate") : 0;
     core_.type.mass = caseChecks::positive(dict, "mass");
     core_.weight = particleWeight;
 }

@@ -1,0 +1,198 @@
+/*---------------------------------------------------------------------------*\
+  coagulationFoam: weighted stochastic particles coupled to OpenFOAM
+  Copyright (C) 2025-2026 the coagulationFoam authors
+  SPDX-License-Identifier: GPL-3.0-or-later (see COPYING); links OpenFOAM,
+  which is GPL-3.0-or-later too
+\*---------------------------------------------------------------------------*/
+
+#include "localSaffmanTurner.H"
+#include "caseChecks.H"
+#include "IOdictionary.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace coagulationKernels
+{
+    defineTypeNameAndDebug(localSaffmanTurner, 0);
+    addToRunTimeSelectionTable
+    (
+        coagulationKernel,
+        localSaffmanTurner,
+        dictionary
+    );
+}
+}
+
+
+namespace
+{
+    const char* const modelName = "kernel model 'localSaffmanTurner'";
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::coagulationKernels::localSaffmanTurner::readCoefficient
+(
+    const dictionary& dict
+)
+{
+    caseChecks::keywords(dict, {"type", "coefficient", "epsilon", "nu"});
+    return caseChecks::positive(dict, "coefficient");
+}
+
+
+Foam::scalar Foam::coagulationKernels::localSaffmanTurner::uniformNu
+(
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+{
+    scalar nu = 0;
+    string source;
+    if (dict.found("nu"))
+    {
+        nu = caseChecks::withTrapsHeld
+        (
+            [&]() { return dimensionedScalar("nu", dimViscosity, dict); }
+        ).value();
+        source = "entry 'nu' in " + dict.name();
+    }
+    else
+    {
+        IOobject io
+        (
+            "transportProperties",
+            mesh.time().constant(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        );
+        if (!io.typeHeaderOk<IOdictionary>(true))
+        {
+            FatalIOErrorInFunction(dict)
+                << "The " << modelName << " (" << dict.name() << ") has no"
+                << " entry 'nu', so it reads the kinematic viscosity 'nu'"
+                << " from " << io.objectPath() << ", but there is no such"
+                << " file." << nl
+                << "    Give 'nu <value>;' (uniform, m2/s) or 'nu <field>;'"
+                << " in " << dict.name() << nl << exit(FatalIOError);
+        }
+        const IOdictionary transport(io);
+        if (!transport.found("nu"))
+        {
+            FatalIOErrorInFunction(dict)
+                << "The " << modelName << " (" << dict.name() << ") has no"
+                << " entry 'nu', and " << transport.objectPath()
+                << " has no entry 'nu' either (the kinematic viscosity)."
+                << nl << "    Give 'nu <value>;' (uniform, m2/s) or"
+                << " 'nu <field>;' in " << dict.name() << nl
+                << exit(FatalIOError);
+        }
+        nu = caseChecks::withTrapsHeld
+        (
+            [&]() { return dimensionedScalar("nu", dimViscosity, transport); }
+        ).value();
+        source = "entry 'nu' in " + transport.objectPath();
+    }
+
+    if (!(nu > 0) || !std::isfinite(nu))
+    {
+        FatalIOErrorInFunction(dict)
+            << "The kinematic viscosity nu = " << nu << " (" << source.c_str()
+            << ") of the " << modelName << " must be positive and finite"
+            << nl << exit(FatalIOError);
+    }
+    Info<< "    nu " << nu << " (uniform, " << source.c_str() << ")" << endl;
+    return nu;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::coagulationKernels::localSaffmanTurner::localSaffmanTurner
+(
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+:
+    // The algorithms are built with a saffmanTurner kernel for its majorant
+    // layout; every cell step is given the cell's own (cellKernel)
+    coagulationKernel
+    (
+        readCoefficient(dict),
+        coag::makeKernel("saffmanTurner", 1)
+    ),
+    epsilon_
+    (
+        caseChecks::cellField
+        (
+            dict,
+            modelName,
+            "epsilon",
+            dict.getOrDefault<word>("epsilon", "epsilon"),
+            mesh,
+            dimensionSet(0, 2, -3, 0, 0),
+            true
+        )
+    ),
+    nu_(),
+    cellKernels_()
+{
+    // 'nu': a field's name, or a value (with or without dimensions)
+    scalar nu = 0;
+    if (dict.found("nu") && dict.lookup("nu")[0].isWord())
+    {
+        nu_ = caseChecks::cellField
+        (
+            dict,
+            modelName,
+            "nu",
+            dict.get<word>("nu"),
+            mesh,
+            dimViscosity,
+            true
+        );
+        Info<< "    nu from field " << nu_->name() << ": "
+            << gMin(nu_->primitiveField()) << " to "
+            << gMax(nu_->primitiveField()) << endl;
+    }
+    else
+    {
+        nu = uniformNu(dict, mesh);
+    }
+
+    const scalarField& epsilon = epsilon_->primitiveField();
+    cellKernels_.reserve(epsilon.size());
+    scalar lowest = GREAT, highest = 0;
+    forAll(epsilon, celli)
+    {
+        const scalar nuc = nu_ ? nu_->primitiveField()[celli] : nu;
+        const scalar K0c = K0()*std::sqrt(epsilon[celli]/nuc);
+        if (!(K0c > 0) || !std::isfinite(K0c))
+        {
+            FatalIOErrorInFunction(dict)
+                << "The " << modelName << " in " << dict.name() << " gives "
+                << "cell " << celli << " the prefactor coefficient"
+                << " sqrt(epsilon/nu) = " << K0c << " (epsilon " << epsilon[celli]
+                << ", nu " << nuc << "): it must be positive and finite"
+                << nl << exit(FatalIOError);
+        }
+        lowest = min(lowest, K0c);
+        highest = max(highest, K0c);
+        cellKernels_.push_back(coag::makeKernel("saffmanTurner", K0c));
+    }
+
+    Info<< "    epsilon from field " << epsilon_->name() << ": "
+        << gMin(epsilon) << " to " << gMax(epsilon) << nl
+        << "    K0 = coefficient sqrt(epsilon/nu) from "
+        << returnReduce(lowest, minOp<scalar>()) << " to "
+        << returnReduce(highest, maxOp<scalar>()) << endl;
+}
+
+
+// ************************************************************************* //
