@@ -1,0 +1,70 @@
+#!/bin/bash
+# SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
+# Particle moves per second of the transport half step for each velocity interpolation and
+# dispersion model (issue 15), on the 2-D sheared box of the scale issue: 50 x 10 cells,
+# u(y) = 1 + y/H, constant kernel with inception everywhere, nut = 1e-5 (1 + 9 y/H) for the
+# turbulent walk, rebound walls. Runs are alternated (ROUNDS rounds of every combination) so
+# that a busy machine biases none; prints transport ms per step and moves/s per run and the
+# median per combination.
+#   tests/benchmarks/transportRates.sh [OUTDIR] [ROUNDS=3] [STEPS=1000]
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+. "$here/../../etc/functions"
+out="${1:-/tmp/transportRates}"; rounds="${2:-3}"; steps="${3:-1000}"
+rm -rf "$out"; mkdir -p "$out"
+base="$out/base"
+cp -r "$COAGULATIONFOAM_DIR/tutorials/constantKernelDuct" "$base"
+cd "$base"; cleanCase
+"$COAGULATIONFOAM_PYTHON" - <<'PY'
+import numpy as np
+nx, ny, L, H = 50, 10, 0.5, 0.1
+open("system/blockMeshDict", "w").write("""FoamFile { version 2.0; format ascii; class dictionary; object blockMeshDict; }
+vertices ( (0 0 0) (%g 0 0) (%g %g 0) (0 %g 0) (0 0 0.01) (%g 0 0.01) (%g %g 0.01) (0 %g 0.01) );
+blocks ( hex (0 1 2 3 4 5 6 7) (%d %d 1) simpleGrading (1 1 1) );
+boundary ( inlet { type patch; faces ((0 4 7 3)); } outlet { type patch; faces ((1 2 6 5)); }
+  walls { type wall; faces ((0 1 5 4) (3 7 6 2)); } frontAndBack { type empty; faces ((0 3 2 1) (4 5 6 7)); } );
+""" % (L, L, H, H, L, L, H, H, nx, ny))
+yc = (np.arange(ny) + 0.5) * H / ny
+u = np.tile((1 + yc / H)[:, None], (1, nx)).ravel()
+nut = np.tile((1e-5 * (1 + 9 * yc / H))[:, None], (1, nx)).ravel()
+vec = lambda us: " ".join("(%.12g 0 0)" % v for v in us)
+open("0/U", "w").write("""FoamFile { version 2.0; format ascii; class volVectorField; object U; }
+dimensions [0 1 -1 0 0 0 0]; internalField nonuniform List<vector> %d (%s);
+boundaryField { inlet { type fixedValue; value nonuniform List<vector> %d (%s); } outlet { type zeroGradient; }
+  walls { type fixedValue; value nonuniform List<vector> %d (%s); } frontAndBack { type empty; } }
+""" % (len(u), vec(u), ny, vec(1 + yc / H), 2 * nx, vec([1.0] * nx + [2.0] * nx)))
+open("0/nut", "w").write("""FoamFile { version 2.0; format ascii; class volScalarField; object nut; }
+dimensions [0 2 -1 0 0 0 0]; internalField nonuniform List<scalar> %d (%s);
+boundaryField { inlet { type zeroGradient; } outlet { type zeroGradient; } walls { type zeroGradient; } frontAndBack { type empty; } }
+""" % (len(nut), " ".join("%.12g" % v for v in nut)))
+PY
+runApplication blockMesh > /dev/null
+foamDictionary -entry functions -remove system/controlDict > /dev/null
+foamDictionary -entry deltaT -set 1e-3 system/controlDict > /dev/null
+foamDictionary -entry endTime -set "$(awk -v s="$steps" 'BEGIN { print s * 1e-3 }')" system/controlDict > /dev/null
+foamDictionary -entry writeInterval -set "$(awk -v s="$steps" 'BEGIN { print s * 1e-3 }')" system/controlDict > /dev/null
+foamDictionary -entry sampling/tRelax -set 100 constant/coagulationProperties > /dev/null
+foamDictionary -entry statisticalWeight/n -set 160 constant/coagulationProperties > /dev/null
+
+declare -A disp=(
+    [none]="{ type none; }"
+    [constant]="{ type constant; D 1e-5; }"
+    [turbulent]="{ type turbulent; Sct 0.7; }"
+)
+printf "%-10s %-10s %5s %12s %14s\n" interp dispersion round "transport_ms" "moves_per_s" | tee "$out/runs.txt"
+for r in $(seq 1 "$rounds"); do
+    for interp in cell cellPoint; do
+        for d in none constant turbulent; do
+            c="$out/${interp}_${d}_$r"
+            cp -r "$base" "$c"
+            foamDictionary -entry transport -add "{ type frozenFlow; interpolationSchemes { U $interp; } }" "$c/constant/coagulationProperties" > /dev/null
+            foamDictionary -entry dispersion -add "${disp[$d]}" "$c/constant/coagulationProperties" > /dev/null
+            OMP_NUM_THREADS=1 coagulationFoam -case "$c" > "$c/log" 2>&1 || { tail "$c/log"; exit 1; }
+            ms=$(grep "transport =" "$c/log" | tail -1 | sed 's/.*transport = \([0-9.e+-]*\) ms.*/\1/')
+            mps=$(grep "particle moves per second" "$c/log" | tail -1 | awk '{print $NF}')
+            printf "%-10s %-10s %5d %12.3f %14.0f\n" "$interp" "$d" "$r" "$ms" "$mps" | tee -a "$out/runs.txt"
+        done
+    done
+done
+echo "median moves/s per combination (one thread):"
+awk 'NR > 1 { k = $1 " " $2; v[k] = v[k] " " $5 } END { for (k in v) { n = split(v[k], a, " "); asort(a); printf "  %-22s %12.0f\n", k, a[int((n + 1) / 2)] } }' "$out/runs.txt" | sort
