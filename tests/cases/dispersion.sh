@@ -4,7 +4,7 @@
 # coagulation, particles released by initialPopulation (tests/cases/dispersionCases.py says
 # what each case is and checks it):
 #   puff       a puff in a closed 2-D box, rebound walls: each cell against the image-sum
-#              Gaussian at two times;
+#              Gaussian at two times; puffBrownian the same with the Brownian model;
 #   slab       stick walls: the fraction remaining against the Fourier series at eight
 #              times; deposited + remaining = initial exactly (the balances close);
 #   wellMixed  D = nut/Sct with nut varying 100x: a uniform start stays uniform.
@@ -12,7 +12,7 @@
 cases="$COAGULATIONFOAM_DIR/tests/cases/dispersionCases.py"
 export PYTHONPATH="$COAGULATIONFOAM_DIR/src/python${PYTHONPATH:+:$PYTHONPATH}"
 
-for kind in ${1:-puff slab wellMixed}; do
+for kind in ${1:-puff puffBrownian slab wellMixed}; do
     c=$(newCase constantKernelDuct "dispersion_$kind")
     cd "$c"
     rm -rf constant/polyMesh log.blockMesh

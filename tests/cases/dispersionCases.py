@@ -9,12 +9,15 @@ puff       2-D box [0,1]^2 (20 x 20 cells), rebound walls, constant D = 2e-3, a 
            40 000 particles released uniformly in [0.2,0.3] x [0.6,0.7]; each cell's count
            at t = 5 and 10 against the image-sum Gaussian (reflecting walls), binomial
            intervals: chi-square over the cells and the largest |z|.
+puffBrownian  the same puff walked by the Brownian model (Stokes-Einstein with slip), of
+           particles of mass 8, the gas chosen so that D(1) = 2e-3, hence D(8) = 1e-3.
 slab       1-D slab [0,1] (25 cells), both walls stick, D = 1, uniform start (40 000
            particles), sqrt(2 D dt) = h/2; the fraction remaining at D t/L^2 = 0.025 ...
            0.2 against the Fourier series, binomial intervals; deposited + remaining =
            initial exactly (the balance closes, checked by the shell script).
 wellMixed  1-D box [0,1] (50 cells), rebound walls, D = nut/Sct with nut = 1e-4 100^x
-           (100x across the box), uniform start (25 000 particles): the counts per cell at
+           (100x across the box), uniform start (25 000 particles, from numberDensityField):
+           the counts per cell at
            t = 10 and 20 stay uniform (chi-square, largest |z|).
 """
 
@@ -82,6 +85,15 @@ KINDS = {
                           "frontAndBack": ("empty", ["frontAndBack"])},
                  dispersion="dispersion { type constant; D 2e-3; }",
                  deltaT=0.5, endTime=10, writeInterval=5),
+    # The same puff walked by the Brownian model with particles of mass 8, its gas set so that
+    # D(m = 1) = 2e-3: a sphere of mass m and density 6/pi has d = m^(1/3), a mean free path
+    # of 1e-30 makes Cc = 1, mu = k T/(3 pi 2e-3); so D(8) = 1e-3 (Stokes-Einstein, D ~ 1/d)
+    "puffBrownian": dict(nx=20, ny=20, lx=1.0, ly=1.0, n=10000, zone="puff",
+                 patches={"walls": ("wall", ["left", "right", "bottom", "top"]),
+                          "frontAndBack": ("empty", ["frontAndBack"])},
+                 dispersion="dispersion { type Brownian; T 300; mu %.17g; lambda 1e-30; rho %.17g; }"
+                            % (1.380649e-23 * 300 / (3 * np.pi * 2e-3), 6 / np.pi),
+                 deltaT=0.5, endTime=10, writeInterval=5, mass=8, D=1e-3),
     "slab": dict(nx=25, ny=1, lx=1.0, ly=0.04, n=1600,
                  patches={"walls": ("wall", ["left", "right"]),
                           "sides": ("empty", ["bottom", "top", "frontAndBack"])},
@@ -102,9 +114,19 @@ def setup(case, kind):
         block_mesh(k["nx"], k["ny"], k["lx"], k["ly"], k["patches"]))
     open(case + "/0/U", "w").write(zero_velocity(k["patches"]))
     text = properties(k["dispersion"], k["n"], k.get("zone"))
+    text = text.replace("mass 1; ", "mass %g; " % k.get("mass", 1))
     text = text.replace("SAMPLE", repr(k["deltaT"]))
     open(case + "/constant/coagulationProperties", "w").write(text)
     if kind == "wellMixed":
+        # the initial population from a field (numberDensityField): 1 everywhere
+        text = open(case + "/constant/coagulationProperties").read()
+        open(case + "/constant/coagulationProperties", "w").write(
+            text.replace("numberDensity 1;", "numberDensityField n0;"))
+        open(case + "/0/n0", "w").write(
+            HEADER.format(cls="volScalarField", obj="n0")
+            + "dimensions [0 -3 0 0 0 0 0];\ninternalField nonuniform List<scalar> %d (%s);\n"
+              "boundaryField\n{\n    walls { type zeroGradient; }\n    sides { type empty; }\n}\n"
+            % (k["nx"], " ".join(["1"] * k["nx"])))
         h = k["lx"] / k["nx"]
         x = (np.arange(k["nx"]) + 0.5) * h
         nut = 1e-4 * 100.0 ** x
@@ -113,7 +135,7 @@ def setup(case, kind):
             HEADER.format(cls="volScalarField", obj="nut")
             + "dimensions [0 2 -1 0 0 0 0];\ninternalField nonuniform List<scalar> %d (%s);\n"
               "boundaryField\n{\n%s\n}\n" % (len(nut), " ".join(repr(v) for v in nut), bf))
-    if kind == "puff":
+    if kind.startswith("puff"):
         open(case + "/system/topoSetDict", "w").write(
             HEADER.format(cls="dictionary", obj="topoSetDict")
             + "actions ( { name puff; type cellZoneSet; action new; source boxToCell;"
@@ -153,8 +175,8 @@ def verdict(name, z, chi2, dof):
 def check(case, kind):
     k = KINDS[kind]
     ok = True
-    if kind == "puff":
-        D, n_total = 2e-3, 4 * k["n"]
+    if kind.startswith("puff"):
+        D, n_total = k.get("D", 2e-3), 4 * k["n"]
         h = k["lx"] / k["nx"]
         edges = np.arange(k["nx"] + 1) * h
         for t in ("5", "10"):
@@ -168,7 +190,7 @@ def check(case, kind):
             z = (counts - e) / np.sqrt(e * (1 - p))
             mask = e > 5
             chi2 = np.sum(z[mask] ** 2)
-            ok &= verdict("puff t = %s (%d cells)" % (t, mask.sum()), z[mask], chi2, mask.sum() - 1)
+            ok &= verdict("%s t = %s (%d cells)" % (kind, t, mask.sum()), z[mask], chi2, mask.sum() - 1)
     elif kind == "slab":
         n0 = k["nx"] * k["n"]
         times = ["0.025", "0.05", "0.075", "0.1", "0.125", "0.15", "0.175", "0.2"]
