@@ -66,5 +66,14 @@ for r in $(seq 1 "$rounds"); do
         done
     done
 done
-echo "median moves/s per combination (one thread):"
-awk 'NR > 1 { k = $1 " " $2; v[k] = v[k] " " $5 } END { for (k in v) { n = split(v[k], a, " "); asort(a); printf "  %-22s %12.0f\n", k, a[int((n + 1) / 2)] } }' "$out/runs.txt" | sort
+echo "median per combination (one thread):"
+"$COAGULATIONFOAM_PYTHON" - "$out/runs.txt" <<'PY'
+import sys
+import numpy as np
+rows = [l.split() for l in open(sys.argv[1]).read().splitlines()[1:] if l.strip()]
+for key in dict.fromkeys((r[0], r[1]) for r in rows):
+    ms = [float(r[3]) for r in rows if (r[0], r[1]) == key]
+    mps = [float(r[4]) for r in rows if (r[0], r[1]) == key]
+    print("  %-10s %-10s %8.2f ms per step %12.0f moves/s (%d runs)"
+          % (key[0], key[1], np.median(ms), np.median(mps), len(ms)))
+PY

@@ -73,8 +73,11 @@ bool Foam::coagulationParticle::move
         trackToAndHitFace(displacement, f, cloud, td);
 
         // A particle wedged between faces (a corner hit again and again)
-        // must not stop the run: hold it for the rest of the step
-        if (stepFraction() > before)
+        // must not stop the run: hold it for the rest of the step. Progress
+        // is more than a round-off share of the segment: a particle pushed
+        // into a face again and again may creep by round-off and would
+        // otherwise never count as stalled
+        if (stepFraction() - before > 1e-9*f)
         {
             stalled = 0;
         }
