@@ -68,8 +68,10 @@ int main(int argc, char *argv[])
         // Operator splitting over dt (Patterson & Wagner 2011, §2) of
         //   S: the source terms, each cell on its own: inception (eqs 10,
         //      20) and coagulation (SWA jumps 21-22, DSA jumps 11-15)
-        //   A: advection, every particle with the frozen flow U (outflow
-        //      leaves, walls rebound), then inflow enters
+        //   A: transport, every particle with the frozen flow U, then its
+        //      random walk dX = grad(D) dt + sqrt(2D) dW (coagulation-
+        //      diffusion paper, eq. 8); outflow leaves, walls rebound or
+        //      take the particle (deposition); then inflow enters
         timer.start();
         if (cloud.splitting() == coagulationCloud::splittingScheme::Lie)
         {

@@ -260,6 +260,11 @@ BUGS = {
             "                    p.dispersal() = Zero;\n",
             "case_channelParallel",
             "decomposed runs: the walk's steps never drawn (Cloud::move path)"),
+    "B47": (BALANCE,
+            "        b.particles += previous_[patchi].particles;\n",
+            "",
+            "case_walls",
+            "patches.csv: a restart counts from zero again (the earlier runs' particles lost)"),
 }
 
 

@@ -6,10 +6,11 @@
 \*---------------------------------------------------------------------------*/
 
 #include "massBalance.H"
+#include "IFstream.H"
+#include "OFstream.H"
 #include "coagulationCloud.H"
 #include "addToRunTimeSelectionTable.H"
 #include "processorPolyPatch.H"
-#include "OFstream.H"
 #include "OSspecific.H"
 
 namespace Foam
@@ -31,9 +32,33 @@ Foam::cloudFunctions::massBalance::massBalance(coagulationCloud& cloud)
     inflow_(),
     outflow_(),
     patches_(cloud.pMesh().boundaryMesh().size()),
+    previous_(cloud.pMesh().boundaryMesh().size()),
     stalled_(0)
 {
     initial_ = domain();
+
+    // A restart: what left per patch before it (written by the master)
+    const fileName file
+    (
+        cloud.mesh().time().timePath()/"uniform"/"coagulationPatchBalance"
+    );
+    if (Pstream::master() && isFile(file))
+    {
+        IFstream is(file);
+        const dictionary dict(is);
+        const polyBoundaryMesh& boundary = cloud.pMesh().boundaryMesh();
+        forAll(boundary, patchi)
+        {
+            const word& name = boundary[patchi].name();
+            if (dict.found(name))
+            {
+                const dictionary& d = dict.subDict(name);
+                previous_[patchi].particles = d.get<label>("particles");
+                previous_[patchi].number = d.get<scalar>("number");
+                previous_[patchi].mass = d.get<scalar>("mass");
+            }
+        }
+    }
 }
 
 
@@ -132,12 +157,14 @@ void Foam::cloudFunctions::massBalance::check() const
 
 void Foam::cloudFunctions::massBalance::writePatches() const
 {
-    // Per patch since the start of this run: the log, and one row per patch
-    // and write time in postProcessing/coagulationBalance/patches.csv
+    // Per patch since the case's first start: the log, one row per patch
+    // and write time in postProcessing/coagulationBalance/patches.csv, and
+    // the totals in <time>/uniform for a restart from this time
     const polyBoundaryMesh& boundary = cloud_.pMesh().boundaryMesh();
     const boolList& stick = cloud_.patchInteraction().stick();
     const Time& time = cloud_.mesh().time();
     autoPtr<OFstream> csv;
+    dictionary totals;
     if (Pstream::master())
     {
         const fileName dir(time.globalPath()/"postProcessing"/"coagulationBalance");
@@ -157,9 +184,20 @@ void Foam::cloudFunctions::massBalance::writePatches() const
         reduce(b.particles, sumOp<label>());
         reduce(b.number, sumOp<scalar>());
         reduce(b.mass, sumOp<scalar>());
+        b.particles += previous_[patchi].particles;
+        b.number += previous_[patchi].number;
+        b.mass += previous_[patchi].mass;
         if (isA<processorPolyPatch>(boundary[patchi]) || b.particles == 0)
         {
             continue;
+        }
+        if (Pstream::master())
+        {
+            dictionary d;
+            d.add("particles", b.particles);
+            d.add("number", b.number);
+            d.add("mass", b.mass);
+            totals.add(boundary[patchi].name(), d);
         }
         const word kind(stick[patchi] ? "deposited" : "outflow");
         Info<< "    " << kind << " " << boundary[patchi].name() << ": "
@@ -173,6 +211,15 @@ void Foam::cloudFunctions::massBalance::writePatches() const
         }
     }
     Info<< endl;
+
+    if (Pstream::master())
+    {
+        const fileName dir(time.timePath()/"uniform");
+        mkDir(dir);
+        OFstream os(dir/"coagulationPatchBalance");
+        os.precision(17);
+        totals.write(os, false);
+    }
 }
 
 
