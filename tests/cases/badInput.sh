@@ -74,7 +74,7 @@ expectFatal unknownDispersion  "random"           -entry dispersion -set "{ type
 expectFatal typoDispersion     "Dt"               -entry dispersion -set "{ type constant; Dt 1e-3; }"
 expectFatal negativeD          "'D'"              -entry dispersion -set "{ type constant; D -1e-3; }"
 expectFatal zeroSct            "Sct"              -entry dispersion -set "{ type turbulent; Sct 0; }"
-expectFatal missingNut         "needs the field 'nut'" -entry dispersion -set "{ type turbulent; Sct 0.7; }"
+expectFatal missingNut         "reads the field 'nut'" -entry dispersion -set "{ type turbulent; Sct 0.7; }"
 expectFatal brownianNoT        "'T'"              -entry dispersion -set "{ type Brownian; mu 1.8e-5; lambda 6.6e-8; rho 1000; }"
 expectFatal brownianNegRho     "rho"              -entry dispersion -set "{ type Brownian; T 300; mu 1.8e-5; lambda 6.6e-8; rho -1; }"
 expectFatal initialZone        "nowhere"          -entry initialPopulation -set "{ numberDensity 1e9; mass 1; cellZone nowhere; }"

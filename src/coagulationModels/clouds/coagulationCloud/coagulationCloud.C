@@ -260,12 +260,8 @@ void Foam::coagulationCloud::createInitialPopulation()
         return;
     }
 
-    // Checked on every start, used on a fresh one only: a start time that
-    // holds particle files of this cloud (a restart) continues from them
-    const initialPopulation initial
-    (
-        properties_.subDict("initialPopulation"), *this
-    );
+    // Used on a fresh start only: a start time that holds particle files of
+    // this cloud (a restart) continues from them
     const fileName dir(mesh_.time().timePath()/cloud::prefix/name());
     bool written = isFile(dir/"coordinates") || isFile(dir/"positions");
     reduce(written, orOp<bool>());
@@ -275,6 +271,10 @@ void Foam::coagulationCloud::createInitialPopulation()
             << mesh_.time().timeName() << " has the cloud's particles" << endl;
         return;
     }
+    const initialPopulation initial
+    (
+        properties_.subDict("initialPopulation"), *this
+    );
 
     const label created = returnReduce(initial.create(*this), sumOp<label>());
     Info<< "Initial population: " << created << " particles" << endl;

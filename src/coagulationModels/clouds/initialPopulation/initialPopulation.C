@@ -51,37 +51,20 @@ Foam::initialPopulation::initialPopulation
     }
     else
     {
-        const word fieldName(dict.get<word>("numberDensityField"));
-        IOobject io
+        const autoPtr<volScalarField> n
         (
-            fieldName,
-            mesh.time().timeName(),
-            mesh,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE,
-            false
+            caseChecks::cellField
+            (
+                dict,
+                "initial population",
+                "numberDensityField",
+                dict.get<word>("numberDensityField"),
+                mesh,
+                dimless/dimVolume,
+                false
+            )
         );
-        if (!io.typeHeaderOk<volScalarField>(true))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Entry 'numberDensityField' of " << dict.name()
-                << " names the field '" << fieldName << "', which is not in "
-                << io.objectPath() << nl << exit(FatalIOError);
-        }
-        const volScalarField n(io, mesh);
-        if
-        (
-            gMin(n.primitiveField()) < 0
-         || !std::isfinite(gSum(n.primitiveField()))
-        )
-        {
-            FatalIOErrorInFunction(dict)
-                << "Field " << n.objectPath() << " (entry"
-                << " 'numberDensityField' of " << dict.name() << ") has"
-                << " negative or non-finite values: min "
-                << gMin(n.primitiveField()) << nl << exit(FatalIOError);
-        }
-        density_ = n.primitiveField();
+        density_ = n->primitiveField();
     }
 
     // Only the cells of a zone

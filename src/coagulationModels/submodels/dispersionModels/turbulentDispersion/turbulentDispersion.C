@@ -32,6 +32,7 @@ Foam::dispersionModels::turbulentDispersion::turbulentDispersion
 )
 :
     dispersionModel(mesh),
+    nut_(),
     cellD_(),
     pointD_(),
     drift_(dict.getOrDefault<bool>("drift", true)),
@@ -46,36 +47,18 @@ Foam::dispersionModels::turbulentDispersion::turbulentDispersion
     }
 
     // The turbulent viscosity of the start time, as the flow solver wrote it
-    const word nutName(dict.getOrDefault<word>("nut", "nut"));
-    IOobject io
+    // (written again with every time, so that a restart finds it)
+    nut_ = caseChecks::cellField
     (
-        nutName,
-        mesh.time().timeName(),
+        dict,
+        "dispersion model " + typeName,
+        "nut",
+        dict.getOrDefault<word>("nut", "nut"),
         mesh,
-        IOobject::MUST_READ,
-        IOobject::NO_WRITE,
+        dimViscosity,
         false
     );
-    if (!io.typeHeaderOk<volScalarField>(true))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Dispersion model " << typeName << " in " << dict.name()
-            << " needs the field '" << nutName << "' (entry 'nut'), which is"
-            << " not in " << io.objectPath() << nl
-            << "    Start from a time the flow solver wrote (with its"
-            << " turbulence fields), or map them with mapFields" << nl
-            << exit(FatalIOError);
-    }
-    const volScalarField nut(io, mesh);
-
-    if (gMin(nut.primitiveField()) < 0 || !std::isfinite(gSum(nut.primitiveField())))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Field " << nut.objectPath() << " (entry 'nut' of "
-            << dict.name() << ") has negative or non-finite values:"
-            << " min " << gMin(nut.primitiveField()) << nl
-            << exit(FatalIOError);
-    }
+    const volScalarField& nut = *nut_;
 
     const volScalarField D("Dt", nut/Sct);
     cellD_ = D.primitiveField();
