@@ -246,6 +246,50 @@ TEST(PseudoTurbulence, SpectrumOfTheHarmonicsFollowsMinusFiveThirds)
     EXPECT_NEAR(total / M, 1.5 * p.u0Squared(), 1e-10);
 }
 
+TEST(PseudoTurbulence, EnergyPerWavenumberBinMatchesTheSpectrumIntegral)
+{
+    // Sharper than the slope: harmonic j lands in a bin with probability
+    // int_(bin & Delta_j) E dk / E_j (its density in (5.16) is E(k)/E_j), so the expected energy
+    // of the harmonics in any bin is exactly int_bin E dk. Chi-square over the bins with the
+    // per-field spread (the same 24 bins as above, 4000 fields: enough to see k_j drawn
+    // uniformly on Delta_j instead of by (5.16), planted bug B54).
+    const auto p = PseudoTurbulenceParameters::fromScales(1.0, twoPi / 1000, twoPi, 6, 8);
+    const int M = 4000, B = 24;
+    const double lk0 = std::log(p.k0), dl = (std::log(p.kmax) - lk0) / B;
+    std::vector<RunningStatistics> bins(B);
+    std::vector<double> perField(B);
+    for (int m = 0; m < M; ++m) {
+        const PseudoTurbulence f(p, seedFor(43, std::uint64_t(m)));
+        std::fill(perField.begin(), perField.end(), 0.0);
+        for (std::size_t j = 0; j < f.harmonics(); ++j) {
+            const int b = std::min(B - 1, int((std::log(f.wavenumber(j)) - lk0) / dl));
+            perField[std::size_t(b)] += f.energy(j);
+        }
+        for (int b = 0; b < B; ++b) bins[std::size_t(b)].add(perField[std::size_t(b)]);
+    }
+    double chi2 = 0;
+    int dof = 0;
+    for (int b = 0; b < B; ++b) {
+        const double lo = std::exp(lk0 + b * dl), hi = std::min(p.kmax, std::exp(lk0 + (b + 1) * dl));
+        const double expected = p.energyBetween(lo, hi);
+        const RunningStatistics& s = bins[std::size_t(b)];
+        if (s.standardError() > 1e-12 * expected) {
+            const double z = (s.mean() - expected) / s.standardError();
+            chi2 += z * z;
+            ++dof;
+        } else {
+            EXPECT_NEAR(s.mean(), expected, 1e-10 * expected) << "bin " << b;
+        }
+    }
+    std::printf("[ PseudoTurbulence ] binned harmonic energy against int_bin E dk: chi2 = %.1f "
+                "on %d bins\n", chi2, dof);
+    ASSERT_GT(dof, 12);
+    // 99.9 % quantile of chi2 with dof degrees of freedom (Wilson-Hilferty)
+    const double z999 = 3.0902, a = 2.0 / (9.0 * dof);
+    const double q = dof * std::pow(1 - a + z999 * std::sqrt(a), 3);
+    EXPECT_LT(chi2, q) << "99.9 % quantile " << q;
+}
+
 TEST(PseudoTurbulence, BatchEvaluationEqualsPointEvaluation)
 {
     const auto p = PseudoTurbulenceParameters::fromScales(1.0, 1e-3, 1.0, 4, 8);
