@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 
 namespace coag {
@@ -32,6 +33,51 @@ void cross(const double a[3], const double b[3], double c[3])
 }
 
 } // namespace
+
+void sinCosBatch(std::size_t n, const double* theta, double* sinOut, double* cosOut)
+{
+    // Cody-Waite: z = theta - q pi/2 with pi/2 in three parts (Cephes' DP1..DP3, doubled;
+    // the first two have short mantissas, so q * part is exact for the q allowed here),
+    // |z| <= pi/4; then Cephes' minimax polynomials for sin and cos on [-pi/4, pi/4] and the
+    // quadrant q mod 4 by bit masks: no branch and no libm call, so the loop vectorises.
+    constexpr double P1 = 2 * 7.85398125648498535156E-1, P2 = 2 * 3.77489470793079817668E-8,
+                     P3 = 2 * 2.69515142907905952645E-15;
+    constexpr double twoOverPi = 0.63661977236758134308;
+    constexpr double magic = 6755399441055744.0;   // 1.5 * 2^52: adding it rounds to an integer
+    for (std::size_t i = 0; i < n; ++i) {
+        const double t = theta[i];
+        const double qm = t * twoOverPi + magic;
+        const double q = qm - magic;
+        std::uint64_t qi;
+        std::memcpy(&qi, &qm, sizeof qi);   // the low bits of qm's mantissa hold q (mod 2^51)
+        const double z = ((t - q * P1) - q * P2) - q * P3;
+        const double zz = z * z;
+        const double sp = z + z * zz *
+            (((((1.58962301576546568060E-10 * zz - 2.50507477628578072866E-8) * zz
+                + 2.75573136213857245213E-6) * zz - 1.98412698295895385996E-4) * zz
+              + 8.33333333332211858878E-3) * zz - 1.66666666666666307295E-1);
+        const double cp = 1.0 - 0.5 * zz + zz * zz *
+            (((((-1.13585365213876817300E-11 * zz + 2.08757008419747316778E-9) * zz
+                - 2.75573141792967388112E-7) * zz + 2.48015872888517045348E-5) * zz
+              - 1.38888888888730564116E-3) * zz + 4.16666666666665929218E-2);
+        // quadrant 0: (s, c), 1: (c, -s), 2: (-s, -c), 3: (-c, s): the swap and the signs
+        // as 64-bit masks (integer and/or/xor only: SSE2 has no 64-bit compare)
+        std::uint64_t sb, cb;
+        std::memcpy(&sb, &sp, sizeof sb);
+        std::memcpy(&cb, &cp, sizeof cb);
+        const std::uint64_t odd = 0 - (qi & 1);   // all ones in odd quadrants
+        const std::uint64_t sr = (cb & odd) | (sb & ~odd), cr = (sb & odd) | (cb & ~odd);
+        const std::uint64_t so = sr ^ ((qi & 2) << 62), co = cr ^ (((qi + 1) & 2) << 62);
+        std::memcpy(&sinOut[i], &so, sizeof so);
+        std::memcpy(&cosOut[i], &co, sizeof co);
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!(std::abs(theta[i]) < limitSinCosBatch)) {   // rare: out of range or not finite
+            sinOut[i] = std::sin(theta[i]);
+            cosOut[i] = std::cos(theta[i]);
+        }
+    }
+}
 
 PseudoTurbulenceParameters PseudoTurbulenceParameters::fromDissipation(
     double epsilon, double nu, double L, int logIntervals, int nPerInterval, double C1)
@@ -169,14 +215,21 @@ void PseudoTurbulence::amplitudes(std::size_t j, double a[3], double b[3]) const
 
 void PseudoTurbulence::velocity(const double x[3], double u[3]) const
 {
+    // phases of a chunk of harmonics, their sin/cos as one vector batch, then the sums
+    constexpr std::size_t chunk = 256;
+    double th[chunk], sn[chunk], cs[chunk];
     double u0 = 0, u1 = 0, u2 = 0;
     const std::size_t N = k_.size();
-    for (std::size_t j = 0; j < N; ++j) {
-        const double th = kx_[j] * x[0] + ky_[j] * x[1] + kz_[j] * x[2];
-        const double c = std::cos(th), sn = std::sin(th);
-        u0 += ax_[j] * c + bx_[j] * sn;
-        u1 += ay_[j] * c + by_[j] * sn;
-        u2 += az_[j] * c + bz_[j] * sn;
+    for (std::size_t j0 = 0; j0 < N; j0 += chunk) {
+        const std::size_t m = std::min(chunk, N - j0);
+        for (std::size_t j = 0; j < m; ++j)
+            th[j] = kx_[j0 + j] * x[0] + ky_[j0 + j] * x[1] + kz_[j0 + j] * x[2];
+        sinCosBatch(m, th, sn, cs);
+        for (std::size_t j = 0; j < m; ++j) {
+            u0 += ax_[j0 + j] * cs[j] + bx_[j0 + j] * sn[j];
+            u1 += ay_[j0 + j] * cs[j] + by_[j0 + j] * sn[j];
+            u2 += az_[j0 + j] * cs[j] + bz_[j0 + j] * sn[j];
+        }
     }
     u[0] = u0;
     u[1] = u1;
@@ -189,17 +242,25 @@ void PseudoTurbulence::velocityGradient(const double x[3], double u[3], double g
         u[i] = 0;
         for (int l = 0; l < 3; ++l) grad[i][l] = 0;
     }
+    constexpr std::size_t chunk = 256;
+    double th[chunk], sn[chunk], cs[chunk];
     const std::size_t N = k_.size();
-    for (std::size_t j = 0; j < N; ++j) {
-        const double kv[3] = {kx_[j], ky_[j], kz_[j]};
-        const double a[3] = {ax_[j], ay_[j], az_[j]};
-        const double b[3] = {bx_[j], by_[j], bz_[j]};
-        const double th = kv[0] * x[0] + kv[1] * x[1] + kv[2] * x[2];
-        const double c = std::cos(th), sn = std::sin(th);
-        for (int i = 0; i < 3; ++i) {
-            u[i] += a[i] * c + b[i] * sn;
-            const double d = -a[i] * sn + b[i] * c;   // d/dtheta of component i
-            for (int l = 0; l < 3; ++l) grad[i][l] += d * kv[l];
+    for (std::size_t j0 = 0; j0 < N; j0 += chunk) {
+        const std::size_t m = std::min(chunk, N - j0);
+        for (std::size_t j = 0; j < m; ++j)
+            th[j] = kx_[j0 + j] * x[0] + ky_[j0 + j] * x[1] + kz_[j0 + j] * x[2];
+        sinCosBatch(m, th, sn, cs);
+        for (std::size_t jj = 0; jj < m; ++jj) {
+            const std::size_t j = j0 + jj;
+            const double kv[3] = {kx_[j], ky_[j], kz_[j]};
+            const double a[3] = {ax_[j], ay_[j], az_[j]};
+            const double b[3] = {bx_[j], by_[j], bz_[j]};
+            const double c = cs[jj], sv = sn[jj];
+            for (int i = 0; i < 3; ++i) {
+                u[i] += a[i] * c + b[i] * sv;
+                const double d = -a[i] * sv + b[i] * c;   // d/dtheta of component i
+                for (int l = 0; l < 3; ++l) grad[i][l] += d * kv[l];
+            }
         }
     }
 }
@@ -216,16 +277,24 @@ void PseudoTurbulence::velocities(std::size_t nPoints, const double* x, const do
 {
     for (std::size_t p = 0; p < nPoints; ++p) ux[p] = uy[p] = uz[p] = 0.0;
     const std::size_t N = k_.size();
-    for (std::size_t j = 0; j < N; ++j) {
-        const double kx = kx_[j], ky = ky_[j], kz = kz_[j];
-        const double ax = ax_[j], ay = ay_[j], az = az_[j];
-        const double bx = bx_[j], by = by_[j], bz = bz_[j];
-        for (std::size_t p = 0; p < nPoints; ++p) {
-            const double th = kx * x[p] + ky * y[p] + kz * z[p];
-            const double c = std::cos(th), sn = std::sin(th);
-            ux[p] += ax * c + bx * sn;
-            uy[p] += ay * c + by * sn;
-            uz[p] += az * c + bz * sn;
+    // points in chunks that stay in L1 with their phases, sines and cosines
+    constexpr std::size_t chunk = 256;
+    double th[chunk], sn[chunk], cs[chunk];
+    for (std::size_t p0 = 0; p0 < nPoints; p0 += chunk) {
+        const std::size_t m = std::min(chunk, nPoints - p0);
+        const double *xc = x + p0, *yc = y + p0, *zc = z + p0;
+        double *uxc = ux + p0, *uyc = uy + p0, *uzc = uz + p0;
+        for (std::size_t j = 0; j < N; ++j) {
+            const double kx = kx_[j], ky = ky_[j], kz = kz_[j];
+            const double ax = ax_[j], ay = ay_[j], az = az_[j];
+            const double bx = bx_[j], by = by_[j], bz = bz_[j];
+            for (std::size_t p = 0; p < m; ++p) th[p] = kx * xc[p] + ky * yc[p] + kz * zc[p];
+            sinCosBatch(m, th, sn, cs);
+            for (std::size_t p = 0; p < m; ++p) {
+                uxc[p] += ax * cs[p] + bx * sn[p];
+                uyc[p] += ay * cs[p] + by * sn[p];
+                uzc[p] += az * cs[p] + bz * sn[p];
+            }
         }
     }
 }
