@@ -37,7 +37,7 @@ void cross(const double a[3], const double b[3], double c[3])
 void sinCosBatch(std::size_t n, const double* theta, double* sinOut, double* cosOut)
 {
     // Cody-Waite: z = theta - q pi/2 with pi/2 in three parts (Cephes' DP1..DP3, doubled;
-    // the first two have short mantissas, so q * part is exact for the q allowed here),
+    // the first two have 23 and 21 significant bits, so q * part is exact for q < 2^30),
     // |z| <= pi/4; then Cephes' minimax polynomials for sin and cos on [-pi/4, pi/4] and the
     // quadrant q mod 4 by bit masks: no branch and no libm call, so the loop vectorises.
     constexpr double P1 = 2 * 7.85398125648498535156E-1, P2 = 2 * 3.77489470793079817668E-8,

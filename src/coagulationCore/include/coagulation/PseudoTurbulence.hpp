@@ -89,7 +89,9 @@ struct PseudoTurbulenceParameters {
 //  batch evaluation's kernel. Agrees with std::sin/std::cos to about 1e-16 absolute for
 //  |theta| < limitSinCosBatch (measured in the tests); larger or non-finite phases are handed
 //  to std::sin/std::cos.
-constexpr double limitSinCosBatch = 6.7e7;   // 2^26 quadrants: q * (pi/2 parts) stays exact
+//  (|theta| < 6.7e7: q = round(theta 2/pi) < 2^25.4, and q times the first two parts of pi/2,
+//  23 and 21 significant bits, is exact in a double.)
+constexpr double limitSinCosBatch = 6.7e7;
 void sinCosBatch(std::size_t n, const double* theta, double* sinOut, double* cosOut);
 
 //- One sample of the field (5.14): see PseudoTurbulenceParameters.
