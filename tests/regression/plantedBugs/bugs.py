@@ -8,7 +8,9 @@ else). B01-B19 are the bugs of the first campaign (on the layout before issue 14
 submodels), ported to the current files with the same meaning; B20-B28 are new; B29-B34
 plant bugs in the size distribution (issue 18): core, cloud function, post-processing;
 B35-B37 in the field-driven sources (issue 15 item 5); B40-B46 in the random walk and the
-velocity interpolation (issue 15). B14-B17 now
+velocity interpolation (issue 15); B50-B54 in the pseudo-turbulence model (issue 17, core
+tests only: plant, `make coagulationCoreTests`, run `--gtest_filter='PseudoTurbulence*'`,
+revert; run.sh's ./Allwmake rebuild works too). B14-B17 now
 sit in the coagulationPost package (the campaign measured them in the scripts it came from).
 
     bugs.py list                 id, file, targeted tests, what the bug is
@@ -39,6 +41,8 @@ PSDCORE = "src/coagulationCore/src/SizeDistribution.cpp"
 PSDFUNC = M + "cloudFunctions/sizeDistribution/sizeDistribution.C"
 PSDPOST = "src/python/coagulationPost/psd.py"
 ANALYTIC = "src/python/coagulationPost/analytic.py"
+# The randomized spectral model of pseudo-turbulence (issue 17), core only
+PSEUDO = "src/coagulationCore/src/PseudoTurbulence.cpp"
 
 # Every targeted run includes the fault and bad-input cases
 ALWAYS = "case_faults|case_badInput"
@@ -265,6 +269,32 @@ BUGS = {
             "",
             "case_walls",
             "patches.csv: a restart counts from zero again (the earlier runs' particles lost)"),
+    # The pseudo-turbulence model (issue 17): each caught by the core tests named in TESTS
+    "B50": (PSEUDO,
+            "            cross(xi, Om, a);\n",
+            "            for (int c = 0; c < 3; ++c) a[c] = xi[c];\n",
+            "core.PseudoTurbulence",
+            "pseudo-turbulence: cosine amplitude xi, not xi x Omega (not orthogonal to k)"),
+    "B51": (PSEUDO,
+            "        const double amp = std::sqrt(Ej);\n",
+            "        const double amp = std::sqrt(Ej / 1.5);\n",
+            "core.PseudoTurbulence",
+            "pseudo-turbulence: harmonics normalised to u0^2, not 3/2 u0^2 (5.13)"),
+    "B52": (PSEUDO,
+            "        const double Ej = p_.energyBetween(lo, hi) / n;\n",
+            "        const double Ej = 1.5 * p_.u0Squared() / (n * n0);\n",
+            "core.PseudoTurbulence",
+            "pseudo-turbulence: every harmonic the same energy (log parts not energy-weighted)"),
+    "B53": (PSEUDO,
+            "th[p] = kx * xc[p] + ky * yc[p] + kz * zc[p];",
+            "th[p] = kx * xc[p] + ky * yc[p] + kz * yc[p];",
+            "core.PseudoTurbulence",
+            "pseudo-turbulence: batch evaluation's phase with y for z"),
+    "B54": (PSEUDO,
+            "            const double kj = std::pow(s0 - gamma * (s0 - s1), -1.5);\n",
+            "            const double kj = std::pow(s0, -1.5) + gamma * (std::pow(s1, -1.5) - std::pow(s0, -1.5));\n",
+            "core.PseudoTurbulence",
+            "pseudo-turbulence: k_j uniform on Delta_j, not by (5.16)"),
 }
 
 

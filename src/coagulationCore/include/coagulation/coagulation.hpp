@@ -19,6 +19,7 @@
 #include "coagulation/NumberControl.hpp"
 #include "coagulation/Particle.hpp"
 #include "coagulation/ParticleType.hpp"
+#include "coagulation/PseudoTurbulence.hpp"
 #include "coagulation/Rng.hpp"
 #include "coagulation/SumTree.hpp"
 #include "coagulation/SizeDistribution.hpp"
