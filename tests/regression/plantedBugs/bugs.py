@@ -8,9 +8,10 @@ else). B01-B19 are the bugs of the first campaign (on the layout before issue 14
 submodels), ported to the current files with the same meaning; B20-B28 are new; B29-B34
 plant bugs in the size distribution (issue 18): core, cloud function, post-processing;
 B35-B37 in the field-driven sources (issue 15 item 5); B40-B46 in the random walk and the
-velocity interpolation (issue 15); B50-B54 in the pseudo-turbulence model (issue 17, core
-tests only: plant, `make coagulationCoreTests`, run `--gtest_filter='PseudoTurbulence*'`,
-revert; run.sh's ./Allwmake rebuild works too). B14-B17 now
+velocity interpolation (issue 15), B47 in the per-patch balance; B50-B54 in the
+pseudo-turbulence model (issue 17, core tests only: plant, `make coagulationCoreTests`, run
+`--gtest_filter='PseudoTurbulence*'`, revert; run.sh's ./Allwmake rebuild works too); B60-B66
+in the 2-D coagulation-diffusion collocation reference (issue 16, core tests). B14-B17 now
 sit in the coagulationPost package (the campaign measured them in the scripts it came from).
 
     bugs.py list                 id, file, targeted tests, what the bug is
@@ -40,6 +41,8 @@ DISPERSION = M + "submodels/dispersionModels/dispersionModel/dispersionModel.C"
 PSDCORE = "src/coagulationCore/src/SizeDistribution.cpp"
 PSDFUNC = M + "cloudFunctions/sizeDistribution/sizeDistribution.C"
 PSDPOST = "src/python/coagulationPost/psd.py"
+# The Eulerian coagulation-diffusion reference (issue 16)
+EULER2D = "src/coagulationCore/src/CoagulationDiffusionReference.cpp"
 ANALYTIC = "src/python/coagulationPost/analytic.py"
 # The randomized spectral model of pseudo-turbulence (issue 17), core only
 PSEUDO = "src/coagulationCore/src/PseudoTurbulence.cpp"
@@ -295,6 +298,41 @@ BUGS = {
             "            const double kj = std::pow(s0, -1.5) + gamma * (std::pow(s1, -1.5) - std::pow(s0, -1.5));\n",
             "core.PseudoTurbulence",
             "pseudo-turbulence: k_j uniform on Delta_j, not by (5.16)"),
+    "B60": (EULER2D,
+            "            const double k = 0.5 * K(i, j);\n",
+            "            const double k = K(i, j);\n",
+            "core.CoagulationDiffusion",
+            "collocation: gain sum without its 1/2"),
+    "B61": (EULER2D,
+            "            LT_(b.s + 1, p) += k * b.w2;\n",
+            "",
+            "core.CoagulationDiffusion",
+            "collocation: loss sum without the upper node of each interval"),
+    "B62": (EULER2D,
+            "    const double c = opt_.diffusion / (opt_.dx * opt_.dx);\n",
+            "    const double c = opt_.diffusion / (2.0 * opt_.dx * opt_.dx);\n",
+            "core.CoagulationDiffusion",
+            "2-D Laplacian: D halved"),
+    "B63": (EULER2D,
+            "            row[0] = M > 1 ? row[2] : row[1];   // mirror about x = 0\n",
+            "            row[0] = row[1];   // mirror about x = 0\n",
+            "core.CoagulationDiffusion",
+            "symmetry axis x = 0: the ghost mirrors the node itself (face symmetry on a node grid)"),
+    "B64": (EULER2D,
+            "        return std::max(hi - lo, 0.0) / dx;\n",
+            "        return std::abs(c) <= opt_.R ? 1.0 : 0.0;\n",
+            "core.CoagulationDiffusion",
+            "initial square sampled at the nodes, not cell-averaged"),
+    "B65": (EULER2D,
+            "                for (std::ptrdiff_t k = 0; k < B; ++k) o[k] = 0.5 * (f[k] + h[k] + dt * g[k]);\n",
+            "                for (std::ptrdiff_t k = 0; k < B; ++k) o[k] = h[k];\n",
+            "core.CoagulationDiffusion",
+            "Heun: the corrector dropped (forward Euler)"),
+    "B66": (EULER2D,
+            "    if (r > 0.25) {\n",
+            "    if (r > 0.26) {\n",
+            "core.CoagulationDiffusion",
+            "explicit stability bound D dt / dx^2 <= 1/4 relaxed"),
 }
 
 
