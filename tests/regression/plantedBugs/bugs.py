@@ -260,7 +260,7 @@ BUGS = {
     "B45": (M + "submodels/transportModels/frozenFlow/frozenFlow.C",
             "        threadTd.setInterpolation(td.UInterp(), maxCo_, &cellLength_);\n",
             "",
-            "case_channels",
+            "case_channels|case_threads",
             "interpolated velocity: the threads move with the cell value"),
     "B46": (M + "submodels/transportModels/frozenFlow/frozenFlow.C",
             "                    p.dispersal() = walkStep(p, k++, dt, walkStream);\n",
