@@ -70,6 +70,9 @@ expectFatal inflowOnOutlet     "no inward flow"   -entry inflow -set "{ patches 
 expectFatal inflowNoPatches    "lists no patch"   -entry inflow -set "{ patches (); density 1e9; mass 1; }"
 expectFatal longSampleInterval "sampleInterval"   -entry sampling/sampleInterval -set 5
 # The random walk and the initial population (issue 15)
+expectFatal unknownInterpolation "cubic"          -entry transport -set "{ type frozenFlow; interpolationSchemes { U cubic; } }"
+expectFatal typoInterpolation  "'u'"              -entry transport -set "{ type frozenFlow; interpolationSchemes { u cellPoint; } }"
+expectFatal maxCoAboveOne      "maxCo"            -entry transport -set "{ type frozenFlow; interpolationSchemes { U cellPoint; } maxCo 2; }"
 expectFatal unknownDispersion  "random"           -entry dispersion -set "{ type random; }"
 expectFatal typoDispersion     "Dt"               -entry dispersion -set "{ type constant; Dt 1e-3; }"
 expectFatal negativeD          "'D'"              -entry dispersion -set "{ type constant; D -1e-3; }"
