@@ -144,7 +144,7 @@ Foam::label Foam::initialPopulation::create(coagulationCloud& cloud) const
     const fvMesh& mesh = cloud.mesh();
     const scalar W = cloud.scaling().particleWeight();
     const bool equalWeights = cloud.algorithmEqualWeights();
-    const cellTetSampler tets(mesh);
+    const cellTetSampler& tets = cloud.cellTets();
 
     // A density that would not fit in memory stops here, not in the step
     scalar expected = 0;
