@@ -98,7 +98,7 @@ int main(int argc, char *argv[])
         if (runTime.write())
         {
             cloud.onWrite();
-            timer.report(cloud.events().coagulations);
+            timer.report(cloud.events(), cloud.transportStep().transfers());
         }
     }
 

@@ -57,6 +57,7 @@ void Foam::cellStepper::advanceCell
     const label np = index.cellStart()[celli + 1] - start;
     const scalar inceptionRate = cloud_.inception().cellRate(celli);
     const bool incepts = inceptionRate > 0;
+    outcome.particles = np;
 
     // Without inception a cell needs a pair to change
     if (np < 2 && !incepts)

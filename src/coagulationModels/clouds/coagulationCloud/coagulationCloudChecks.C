@@ -31,11 +31,17 @@ const Foam::word completeMarker("coagulationCloudComplete");
 //- The mesh's size and volume, as recorded with a written time
 Foam::dictionary meshSignature(const Foam::fvMesh& mesh)
 {
+    // The whole mesh's, so that a time decomposed or reconstructed (a serial
+    // start that goes on in parallel) matches it (not the face and point
+    // counts: v1912's global ones count processor faces and points twice)
+    const Foam::globalMeshData& global = mesh.globalData();
     Foam::dictionary dict;
-    dict.add("nCells", mesh.nCells());
-    dict.add("nFaces", mesh.nFaces());
-    dict.add("nPoints", mesh.nPoints());
-    dict.add("volume", Foam::sum(mesh.V().field()));
+    dict.add("nCells", global.nTotalCells());
+    dict.add
+    (
+        "volume",
+        Foam::returnReduce(Foam::sum(mesh.V().field()), Foam::sumOp<Foam::scalar>())
+    );
     return dict;
 }
 
@@ -202,12 +208,12 @@ void Foam::coagulationCloud::checkStartTime() const
 
     // Particles from another mesh would sit in the wrong cells
     const fileName marker(uniform/completeMarker);
+    const dictionary current(meshSignature(mesh_));  // on every processor
     if (isFile(marker))
     {
         IFstream is(marker);
         const dictionary written(is);
-        const dictionary current(meshSignature(mesh_));
-        for (const word key : {"nCells", "nFaces", "nPoints"})
+        for (const word key : {"nCells"})
         {
             if (written.get<label>(key) != current.get<label>(key))
             {

@@ -10,6 +10,8 @@
 #include "caseChecks.H"
 #include "registerSwitch.H"
 #include "interpolation.H"
+#include "processorPolyPatch.H"
+#include "PstreamBuffers.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -108,7 +110,10 @@ void Foam::transportModels::frozenFlow::moveOnThreads
 {
     // What a move did with a particle (zero: kept, so that the array marks
     // the particles to compact away)
-    enum : char { keptByMove = 0, leftByOutflow, droppedByTracking };
+    enum : char
+    {
+        keptByMove = 0, leftByOutflow, droppedByTracking, toProcessor
+    };
 
     // The threads only read the mesh: its demand-driven parts that tracking
     // uses are built here, serially, first
@@ -121,73 +126,214 @@ void Foam::transportModels::frozenFlow::moveOnThreads
 
     cellParticleIndex& index = cloud_.index();
     index.list(cloud_);
-    const label nParticles = index.particles().size();
     DynamicList<label>& cells = index.cells();
-    outcome_.resize(nParticles);
+    DynamicList<coagulationParticle*> leaving;
 
     const label nPatches = mesh.boundaryMesh().size();
 
-    #pragma omp parallel num_threads(cloud_.nThreads())
+    // The list entries [first, end) move: all of them from the start of the
+    // step, then, round after round, those another processor handed over
+    // (which go on from where they stopped)
+    label first = 0;
+    for (bool fresh = true; ; fresh = false)
     {
-        // A particle's move changes only that particle; what it books as
-        // outflow here is discarded and booked below in list order, so that
-        // the sums do not depend on the thread count
-        List<label> outParticles(nPatches, Zero);
-        List<scalar> outNumber(nPatches, Zero);
-        List<scalar> outMass(nPatches, Zero);
-        coagulationParticle::trackingData threadTd
-        (
-            cloud_, U, outParticles, outNumber, outMass,
-            cloud_.patchInteraction().stick()
-        );
-        threadTd.setWalk(td.walk());
-        threadTd.setInterpolation(td.UInterp(), maxCo_, &cellLength_);
+        const label nParticles = index.particles().size();
+        outcome_.assign(nParticles, keptByMove);
 
-        #pragma omp for schedule(dynamic, 4096)
-        for (label k = 0; k < nParticles; ++k)
+        #pragma omp parallel num_threads(cloud_.nThreads())
         {
-            coagulationParticle& p = *index.particles()[k];
-            p.stepFraction() = 0;
-            if (td.walk())
+            // A particle's move changes only that particle; what it books as
+            // outflow here is discarded and booked below in list order, so
+            // that the sums do not depend on the thread count
+            List<label> outParticles(nPatches, Zero);
+            List<scalar> outNumber(nPatches, Zero);
+            List<scalar> outMass(nPatches, Zero);
+            coagulationParticle::trackingData threadTd
+            (
+                cloud_, U, outParticles, outNumber, outMass,
+                cloud_.patchInteraction().stick()
+            );
+            threadTd.setWalk(td.walk());
+            threadTd.setInterpolation(td.UInterp(), maxCo_, &cellLength_);
+
+            #pragma omp for schedule(dynamic, 4096)
+            for (label k = first; k < nParticles; ++k)
             {
-                p.dispersal() = walkStep(p, k, dt, walkStream);
+                coagulationParticle& p = *index.particles()[k];
+                if (fresh)
+                {
+                    p.stepFraction() = 0;
+                    if (td.walk())
+                    {
+                        p.dispersal() = walkStep(p, k, dt, walkStream);
+                    }
+                }
+                const label booked = threadTd.nBooked();
+                const bool kept = p.move(cloud_, threadTd, dt);
+                outcome_[k] =
+                    !kept ?
+                    (
+                        threadTd.nBooked() > booked
+                      ? leftByOutflow : droppedByTracking
+                    )
+                  : threadTd.switchProcessor ? toProcessor
+                  : keptByMove;
+                cells[k] = p.cell();
             }
-            const label booked = threadTd.nBooked();
-            const bool kept = p.move(cloud_, threadTd, dt);
-            outcome_[k] =
-                kept ? keptByMove
-              : threadTd.nBooked() > booked ? leftByOutflow
-              : droppedByTracking;
-            cells[k] = p.cell();
+
+            // Counts only: the same whatever the order the threads add them
+            #pragma omp critical(frozenFlowMoveCounts)
+            {
+                for (label i = 0; i < threadTd.nStalled(); ++i)
+                {
+                    td.bookStalled();
+                }
+                if (threadTd.nUnhandled())
+                {
+                    td.bookUnhandled(threadTd.unhandledPatch());
+                }
+            }
         }
 
-        // Counts only: the same whatever the order the threads add them in
-        #pragma omp critical(frozenFlowMoveCounts)
+        leaving.clear();
+        for (label k = first; k < nParticles; ++k)
         {
-            for (label i = 0; i < threadTd.nStalled(); ++i)
+            coagulationParticle& p = *index.particles()[k];
+            switch (outcome_[k])
             {
-                td.bookStalled();
+                case keptByMove:
+                    break;
+                case toProcessor:
+                    leaving.append(&p);
+                    break;
+                case leftByOutflow:
+                    td.bookOutflow(p.patch(), p);
+                    cloud_.deleteParticle(p);
+                    break;
+                default:
+                    cloud_.deleteParticle(p);
             }
-            if (threadTd.nUnhandled())
+        }
+
+        index.compact(outcome_);
+        if (!Pstream::parRun())
+        {
+            break;
+        }
+
+        // Processor patches: the leavers go in bulk, what arrives is
+        // appended to the list and moves on
+        bool sent = false;
+        const label nReceived = exchange(leaving, td, sent);
+        if (!sent)
+        {
+            break;
+        }
+        first = index.particles().size() - nReceived;
+    }
+}
+
+
+Foam::label Foam::transportModels::frozenFlow::exchange
+(
+    const DynamicList<coagulationParticle*>& leaving,
+    coagulationParticle::trackingData& td,
+    bool& sent
+)
+{
+    // As Cloud::move does it: particles grouped by neighbour, with the
+    // neighbour's index of the processor patch they cross
+    const polyMesh& mesh = cloud_.pMesh();
+    const polyBoundaryMesh& pbm = mesh.boundaryMesh();
+    const globalMeshData& pData = mesh.globalData();
+    const labelList& procPatches = pData.processorPatches();
+    const labelList& procPatchNeighbours = pData.processorPatchNeighbours();
+    const labelList& neighbourProcs = pData[Pstream::myProcNo()];
+
+    labelList neighbourProcIndices(Pstream::nProcs(), -1);
+    forAll(neighbourProcs, i)
+    {
+        neighbourProcIndices[neighbourProcs[i]] = i;
+    }
+
+    // One reduction decides whether any processor has a particle to hand
+    // over; only then the buffers are exchanged (PstreamBuffers' size
+    // exchange is a collective of its own)
+    sent = returnReduce(!leaving.empty(), orOp<bool>());
+    transfers_.rounds += 1;
+    if (!sent)
+    {
+        return 0;
+    }
+
+    List<IDLList<coagulationParticle>> particleTransferLists
+    (
+        neighbourProcs.size()
+    );
+    List<DynamicList<label>> patchIndexTransferLists(neighbourProcs.size());
+
+    for (coagulationParticle* pPtr : leaving)
+    {
+        coagulationParticle& p = *pPtr;
+        const label patchi = p.patch();
+        const label n = neighbourProcIndices
+        [
+            refCast<const processorPolyPatch>(pbm[patchi]).neighbProcNo()
+        ];
+        p.prepareForParallelTransfer();
+        particleTransferLists[n].append(cloud_.remove(&p));
+        patchIndexTransferLists[n].append(procPatchNeighbours[patchi]);
+    }
+
+    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+    forAll(particleTransferLists, i)
+    {
+        if (particleTransferLists[i].size())
+        {
+            UOPstream particleStream(neighbourProcs[i], pBufs);
+            particleStream
+                << patchIndexTransferLists[i]
+                << particleTransferLists[i];
+        }
+    }
+    transfers_.particles += leaving.size();
+    // Freed here: the particles are in the send buffers
+    particleTransferLists.clear();
+
+    labelList allNTrans(Pstream::nProcs());
+    pBufs.finishedSends(allNTrans);
+    for (const label n : allNTrans)
+    {
+        transfers_.bytes += n;
+    }
+
+    cellParticleIndex& index = cloud_.index();
+    label nReceived = 0;
+    for (const label neighbProci : neighbourProcs)
+    {
+        if (allNTrans[neighbProci])
+        {
+            UIPstream particleStream(neighbProci, pBufs);
+            const labelList receivePatchIndex(particleStream);
+            IDLList<coagulationParticle> newParticles
+            (
+                particleStream,
+                coagulationParticle::iNew(mesh)
+            );
+
+            label pI = 0;
+            for (coagulationParticle& newp : newParticles)
             {
-                td.bookUnhandled(threadTd.unhandledPatch());
+                const label patchi = procPatches[receivePatchIndex[pI++]];
+                newp.correctAfterParallelTransfer(patchi, td);
+                coagulationParticle* pPtr = newParticles.remove(&newp);
+                cloud_.addParticle(pPtr);
+                index.append(pPtr, pPtr->cell());
+                ++nReceived;
             }
         }
     }
-
-    for (label k = 0; k < nParticles; ++k)
-    {
-        if (outcome_[k] != keptByMove)
-        {
-            coagulationParticle& p = *index.particles()[k];
-            if (outcome_[k] == leftByOutflow)
-            {
-                td.bookOutflow(p.patch(), p);
-            }
-            cloud_.deleteParticle(p);
-        }
-    }
-    index.compact(outcome_);
+    return nReceived;
 }
 
 
@@ -239,16 +385,15 @@ void Foam::transportModels::frozenFlow::move
             break;
         }
         td.setWalk(walk);
-        if (!cloudMove && !Pstream::parRun())
+        if (!cloudMove)
         {
             moveOnThreads(U, td, dt, walkStream);
         }
         else
         {
-            // Decomposed runs hand particles to other processors:
-            // Cloud::move (and the walk of the linked list it implies); a
-            // walk's steps are drawn first, in list order, and travel with
-            // the particles that change processor
+            // OpenFOAM's Cloud::move over the linked list; a walk's steps
+            // are drawn first, in list order, and travel with the particles
+            // that change processor
             cloud_.index().invalidateList();
             if (walk)
             {

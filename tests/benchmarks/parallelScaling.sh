@@ -1,0 +1,114 @@
+#!/bin/bash
+# SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
+# Strong scaling on the 2-D sheared box of the scale issue (19; makeScaleBox: 500 cells,
+# constant kernel, inception everywhere, about 50 k particles): a serial start of WARM steps
+# writes the work per cell over its second half (cloudFunctions { work { type cellWork; } }),
+# then every
+# configuration goes on from there for STEPS steps:
+#   1x1          1 rank, 1 thread            (the serial array path)
+#   1x2          1 rank, 2 threads
+#   2x1simple    2 ranks x 1 thread, decomposePar simple (2 1 1): equal cell counts
+#   2x1work      2 ranks x 1 thread, hierarchical (2 1 1) with weightField coagulationWork
+#   2x1cloudMove 2x1work moving with Cloud::move (coagulationCloudMove 1), as before issue 19
+# in ROUNDS alternated rounds. Prints per run: wall s, transport and coagulation ms per step
+# (the slowest rank), moves/s per rank, work and wall balance (max/mean over ranks), particles
+# sent per step and kB received per step, and the particle count and mass at the end.
+#   tests/benchmarks/parallelScaling.sh [OUTDIR] [ROUNDS=3] [STEPS=1000] [WARM=600] [n=160]
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+. "$here/../../etc/functions"
+. "$here/scaleBox.sh"
+out="${1:-/tmp/parallelScaling}"; rounds="${2:-3}"; steps="${3:-1000}"; warm="${4:-600}"
+n="${5:-160}"
+# ranks yield their core while they wait, as runParallel (etc/functions) lets them
+export OMPI_MCA_mpi_yield_when_idle="${OMPI_MCA_mpi_yield_when_idle:-1}"
+mpirunCmd=(mpirun -np 2)
+[ "$(id -u)" = 0 ] && mpirunCmd=(mpirun --allow-run-as-root -np 2)
+rm -rf "$out"; mkdir -p "$out"
+base="$out/base"
+makeScaleBox "$base"
+cd "$base"
+t0=$(awk -v s="$warm" 'BEGIN { print s * 1e-3 }')
+t1=$(awk -v s="$warm" -v m="$steps" 'BEGIN { print (s + m) * 1e-3 }')
+foamDictionary -entry endTime -set "$t0" system/controlDict > /dev/null
+# two writes: the weights written at the second average over its half of the start
+foamDictionary -entry writeInterval -set "$(awk -v s="$warm" 'BEGIN { print s * 5e-4 }')" system/controlDict > /dev/null
+foamDictionary -entry statisticalWeight/n -set "$n" constant/coagulationProperties > /dev/null
+foamDictionary -entry cloudFunctions -add "{ work { type cellWork; } }" constant/coagulationProperties > /dev/null
+OMP_NUM_THREADS=2 coagulationFoam > log.warm 2>&1 || { tail log.warm; exit 1; }
+foamDictionary -entry endTime -set "$t1" system/controlDict > /dev/null
+# writeInterval counts from the start time
+foamDictionary -entry writeInterval -set "$(awk -v m="$steps" 'BEGIN { print m * 1e-3 }')" system/controlDict > /dev/null
+
+setDecomposition()
+{
+    cat > system/decomposeParDict <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }
+numberOfSubdomains 2;
+method $1;
+coeffs { n (2 1 1); }
+$2
+DICT
+    decomposePar -latestTime -force > log.decomposePar 2>&1 || { tail log.decomposePar; exit 1; }
+}
+
+printf "%-13s %3s %8s %10s %10s %10s %8s %8s %9s %8s %9s %12s\n" config round wall_s \
+    coag_ms transp_ms moves/s/rk workBal wallBal sent/step kB/step particles mass | tee "$out/runs.txt"
+for r in $(seq 1 "$rounds"); do
+    for config in 1x1 2x1work 1x2 2x1simple 2x1cloudMove; do
+        c="$out/${config}_$r"
+        cp -r "$base" "$c"
+        cd "$c"
+        case "$config" in
+            1x*) ;;
+            2x1simple) setDecomposition simple "" ;;
+            *) setDecomposition hierarchical "weightField coagulationWork;" ;;
+        esac
+        [ "$config" = 2x1cloudMove ] && \
+            foamDictionary -entry OptimisationSwitches -add "{ coagulationCloudMove 1; }" system/controlDict > /dev/null
+        start=$(date +%s.%N)
+        case "$config" in
+            1x1) OMP_NUM_THREADS=1 coagulationFoam > log 2>&1 ;;
+            1x2) OMP_NUM_THREADS=2 coagulationFoam > log 2>&1 ;;
+            *) OMP_NUM_THREADS=1 "${mpirunCmd[@]}" coagulationFoam -parallel > log 2>&1 ;;
+        esac || { tail log; exit 1; }
+        wall=$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "%.2f", b - a }')
+        "$COAGULATIONFOAM_PYTHON" - "$config" "$r" "$wall" log <<'PY' | tee -a "$out/runs.txt"
+import re, sys
+config, r, wall, log = sys.argv[1:5]
+text = open(log).read()
+coag, transp = map(float, re.findall(r"coagulation += ([\d.e+-]+) ms, transport = ([\d.e+-]+) ms", text)[-1])
+particles = int(re.findall(r"particles in domain += (\d+)", text)[-1])
+mass = float(re.findall(r"mass in domain += ([\d.e+-]+)", text)[-1])
+err = float(re.findall(r"mass balance error \(rel.\) += ([\d.e+-]+)", text)[-1])
+assert abs(err) < 1e-10, "mass balance error %g" % err
+rows = re.findall(r"processor\d+: (.*)", text.split("Per processor")[-1]) if "Per processor" in text else []
+if rows:
+    vals = [list(map(float, row.split())) for row in rows[:2]]
+    coag = max(v[2] for v in vals); transp = max(v[3] for v in vals)
+    mps = "/".join("%.2fM" % (v[4] / 1e6) for v in vals)
+    wb = float(re.findall(r"work balance \(max/mean\) += ([\d.e+-]+)", text)[-1])
+    lb = float(re.findall(r"wall balance \(max/mean\) += ([\d.e+-]+)", text)[-1])
+    sent = sum(v[5] for v in vals); kb = sum(v[6] for v in vals)
+else:
+    mps = "%.2fM" % (float(re.findall(r"particle moves per second += ([\d.e+-]+)", text)[-1]) / 1e6)
+    wb = lb = 1.0; sent = kb = 0.0
+print("%-13s %3s %8s %10.3f %10.3f %10s %8.3f %8.3f %9.1f %8.2f %9d %12.6g"
+      % (config, r, wall, coag, transp, mps, wb, lb, sent, kb, particles, mass))
+PY
+        cd "$out"
+    done
+done
+echo "median wall per configuration, and speedup against 1x1:"
+"$COAGULATIONFOAM_PYTHON" - "$out/runs.txt" <<'PY'
+import sys
+import numpy as np
+rows = [l.split() for l in open(sys.argv[1]).read().splitlines()[1:] if l.strip()]
+walls = {}
+for r in rows:
+    walls.setdefault(r[0], []).append(float(r[2]))
+ref = np.median(walls["1x1"])
+for k, w in walls.items():
+    print("  %-13s %8.2f s  speedup %.2f  (%d runs: %s)"
+          % (k, np.median(w), ref / np.median(w), len(w), " ".join("%.1f" % x for x in w)))
+PY
