@@ -103,6 +103,9 @@ expectFatal psdSampleInterval  "sampleInterval"   -entry cloudFunctions -set "{ 
 expectFatal psdLateStart       "timeStart"        -entry cloudFunctions -set "{ psd1 { type sizeDistribution; probes ((0.098 0.002 0.002)); bins { type integer; K 30; } timeStart 100; } }"
 expectFatal psdDensity         "density"          -entry cloudFunctions -set "{ psd1 { $psdOk density -1; } }"
 expectFatal psdTopTypo         "cloudFunction"    -entry cloudFunction -set "{ psd1 { $psdOk } }"
+expectFatal hugeSampleInterval "sampleInterval"   -entry sampling/sampleInterval -set 1e30
+expectFatal psdHugeCorrelation "correlationTime"  -entry cloudFunctions -set "{ psd1 { $psdOk correlationTime 1e300; } }"
+expectFatal cellWorkTypo       "field"            -entry cloudFunctions -set "{ work { type cellWork; field w; } }"
 file=system/controlDict
 expectFatal endTimeBelowStep   "endTime"          -entry endTime -set 4e-5
 expectFatal courantAboveOne    "deltaT"           -entry deltaT -set 0.01
@@ -129,6 +132,15 @@ expectFatal missingTransport   "localSaffmanTurner.*constant/transportProperties
 expectFatal typoLocalKernel    "epsilom"          -entry kernel -set "{ type localSaffmanTurner; coefficient 1e-7; nu 1e-5; epsilom epsilon; }"
 expectFatal negativeCoefficient "coefficient"     -entry kernel -set "{ type localSaffmanTurner; coefficient -1; nu 1e-5; }"
 expectFatal negativeNu         "nu = -1.*entry 'nu'" -entry kernel -set "{ type localSaffmanTurner; coefficient 1e-7; nu -1e-5; }"
+
+# stopAt nextWrite (also writeNow, noWriteNow) leaves OpenFOAM's endTime at GREAT: the checks
+# that count the run's steps must not overflow (it ended in SIGFPE) nor refuse the run
+ok="$workDir/badInput_stopAtNextWrite"
+rm -rf "$ok"; cp -r "$base" "$ok"
+sed -i 's/^stopAt .*/stopAt          nextWrite;/' "$ok/system/controlDict"
+coagulationFoam -case "$ok" > "$ok/log" 2>&1 || { tail -20 "$ok/log"; fail "stopAt nextWrite: the run failed"; }
+[ "$(cd "$ok" && foamListTimes -noZero | tr '\n' ' ')" = "0.5 " ] || fail "stopAt nextWrite: did not stop at the first write, 0.5"
+echo "ok stopAt nextWrite runs to the first write"
 
 (cd "$base" && foamDictionary constant/coagulationProperties -entry algorithm -set DSA1 > /dev/null)
 expectFatal dsaNumberControl   "maxParticlesPerCell" -entry numberControl -set "{ maxParticlesPerCell 100; }"

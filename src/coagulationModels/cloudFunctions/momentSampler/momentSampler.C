@@ -39,36 +39,22 @@ Foam::cloudFunctions::momentSampler::momentSampler(coagulationCloud& cloud)
     const fvMesh& mesh = cloud.mesh();
 
     caseChecks::keywords(dict, {"tRelax", "sampleInterval"});
-    tRelax_ = dict.get<scalar>("tRelax");
+    tRelax_ = caseChecks::nonNegative(dict, "tRelax");
     const scalar interval = dict.get<scalar>("sampleInterval");
     const scalar dt = runTime.deltaTValue();
-    stepsPerSample_ = label(std::round(interval/dt));
-
-    if
-    (
-        tRelax_ < 0 || stepsPerSample_ < 1
-     || mag(stepsPerSample_*dt - interval) > 1e-6*interval
-    )
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'sampleInterval' = " << interval << " in " << dict.name()
-            << " must be a positive multiple of deltaT = " << dt
-            << ", and 'tRelax' = " << tRelax_ << " must not be negative" << nl
-            << exit(FatalIOError);
-    }
+    stepsPerSample_ = caseChecks::stepsPer(dict, "sampleInterval", interval, dt);
 
     // A run that would take no sample is a mistake in the input: the first
     // sample is at the first step index past the start that is a multiple
-    // of the interval
+    // of the interval (counted in scalars: stopAt nextWrite, writeNow and
+    // noWriteNow leave endTime at GREAT)
     {
         const label startIndex = runTime.startTimeIndex();
-        const label nSteps = label
-        (
-            std::round((runTime.endTime().value() - runTime.value())/dt)
-        );
+        const scalar nSteps =
+            std::round((runTime.endTime().value() - runTime.value())/dt);
         const label firstSample =
             (startIndex/stepsPerSample_ + 1)*stepsPerSample_;
-        if (nSteps > 0 && firstSample > startIndex + nSteps)
+        if (nSteps > 0 && scalar(firstSample - startIndex) > nSteps)
         {
             FatalIOErrorInFunction(dict)
                 << "Entry 'sampleInterval' = " << interval << " in "

@@ -231,18 +231,8 @@ Foam::cloudFunctions::sizeDistribution::sizeDistribution
       ? caseChecks::positive(dict, "sampleInterval")
       : cloud.properties().subDict("sampling").get<scalar>("sampleInterval");
     const scalar dt = runTime.deltaTValue();
-    stepsPerSample_ = label(std::round(sampleInterval_/dt));
-    if
-    (
-        stepsPerSample_ < 1
-     || mag(stepsPerSample_*dt - sampleInterval_) > 1e-6*sampleInterval_
-    )
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'sampleInterval' = " << sampleInterval_ << " in "
-            << dict.name() << " must be a positive multiple of deltaT = "
-            << dt << nl << exit(FatalIOError);
-    }
+    stepsPerSample_ =
+        caseChecks::stepsPer(dict, "sampleInterval", sampleInterval_, dt);
     if (timeStart_ >= runTime.endTime().value())
     {
         FatalIOErrorInFunction(dict)
@@ -251,12 +241,12 @@ Foam::cloudFunctions::sizeDistribution::sizeDistribution
             << ": no sample would be taken" << nl << exit(FatalIOError);
     }
     const scalar Tc = dict.getOrDefault<scalar>("correlationTime", 0);
-    if (!(Tc >= 0) || !std::isfinite(Tc))
+    if (!(Tc >= 0) || !(Tc/sampleInterval_ < 1e9))
     {
         FatalIOErrorInFunction(dict)
             << "Entry 'correlationTime' = " << Tc << " in " << dict.name()
-            << " must be a finite non-negative time" << nl
-            << exit(FatalIOError);
+            << " must be a non-negative time of at most 1e9 sample intervals"
+            << nl << exit(FatalIOError);
     }
     minWindow_ = label(std::ceil(Tc/sampleInterval_ - 1e-9));
     if (dict.found("density"))

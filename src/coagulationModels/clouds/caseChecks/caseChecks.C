@@ -50,6 +50,32 @@ Foam::scalar Foam::caseChecks::positive
 }
 
 
+Foam::label Foam::caseChecks::stepsPer
+(
+    const dictionary& dict,
+    const word& key,
+    const scalar interval,
+    const scalar deltaT
+)
+{
+    // Rounded in scalars first: a huge interval must not overflow a label
+    const scalar steps = std::round(interval/deltaT);
+    if
+    (
+        !(steps >= 1) || !(steps < scalar(labelMax))
+     || mag(steps*deltaT - interval) > 1e-6*interval
+    )
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' = " << interval << " in " << dict.name()
+            << " must be a positive multiple of deltaT = " << deltaT
+            << " (at most " << labelMax << " steps)" << nl
+            << exit(FatalIOError);
+    }
+    return label(steps);
+}
+
+
 Foam::scalar Foam::caseChecks::nonNegative
 (
     const dictionary& dict,

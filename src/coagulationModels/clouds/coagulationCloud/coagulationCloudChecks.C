@@ -130,11 +130,18 @@ void Foam::coagulationCloud::checkExpectedSize(const volVectorField& U) const
     }
     reduce(outflow, sumOp<scalar>());
 
+    // stopAt nextWrite, writeNow or noWriteNow: OpenFOAM sets endTime to
+    // GREAT, and the run's length is unknown
     const scalar volume = gSum(mesh_.V());
+    const bool openEnded = runTime.endTime().value() > 0.5*GREAT;
     scalar residence = runTime.endTime().value() - runTime.value();
     if (outflow > 0)
     {
         residence = min(residence, volume/outflow);
+    }
+    else if (openEnded)
+    {
+        return;
     }
 
     scalar expected =
