@@ -237,6 +237,14 @@ TEST(Lagrangian, ZeroVelocityReproducesHomogeneousSolution)
         for (std::size_t l = 1; l <= 4; ++l) EXPECT_NEAR(a.sizes[l - 1], det.In_l[l - 1], 4.0 * a.sizesSe[l - 1]);
         EXPECT_NEAR(a.mass, det.Ms * det.In, 4.0 * a.massSe);
     }
+    // (5.7), (5.8): Ms = mass / In, Sp_l = In_l / In
+    for (double r : {4.0, 10.0}) {
+        const SphereFunctionals f = deterministicFunctionals(sol, t, r);
+        for (std::size_t l = 0; l < 8; ++l) EXPECT_NEAR(f.Sp[l] * f.In, f.In_l[l], 1e-12 * f.In);
+        double sum = 0.0;
+        for (double x : f.Sp) sum += x;
+        EXPECT_LT(sum, 1.0);
+    }
     // (5.24): deterministic Ms of the linear source in closed form
     const SphereFunctionals det = deterministicFunctionals(sol, t, 5.0);
     const double massClosed = 4.0 / 3.0 * M_PI * 125.0 * (1.0 - 0.75 * 0.5);
@@ -303,6 +311,17 @@ TEST(Lagrangian, DirectAndAdjointAgreeInPseudoTurbulence)
     // v = 0 gives a different value here (the field matters)
     const IntegralEstimate z = adjointIntegral(uniformVelocity(0, 0, 0), TrajectoryOptions{}, sol, t, omega, 4000, 11);
     EXPECT_FALSE(agree(z.total, z.totalSe, a.total, a.totalSe));
+}
+
+TEST(Lagrangian, RealisationIntervalIsStudentT)
+{
+    RealisationStatistics st;
+    for (double x : {1.0, 2.0, 3.0}) st.add({x, 2.0 * x});
+    EXPECT_EQ(st.count(), 3u);
+    EXPECT_NEAR(st.mean()[0], 2.0, 1e-15);
+    // t_{0.975, 2} = 4.302653; sd = 1 and 2
+    EXPECT_NEAR(st.halfWidth95()[0], 4.302653 / std::sqrt(3.0), 1e-5);
+    EXPECT_NEAR(st.halfWidth95()[1], 2.0 * 4.302653 / std::sqrt(3.0), 1e-5);
 }
 
 namespace {
