@@ -12,6 +12,7 @@
 #include "coagulation/SmoluchowskiReference.hpp"
 
 #include <cmath>
+#include <complex>
 #include <cstdio>
 #include <vector>
 
@@ -40,11 +41,14 @@ double dist(const double a[3], const double b[3])
                      (a[2] - b[2]) * (a[2] - b[2]));
 }
 
-// Solid-body rotation about z plus a time-dependent axial velocity: u = (-y, x, cos t);
-// exact X(T) from X(t0): rotation by T - t0, z + sin T - sin t0.
+// Solid-body rotation about z, forced along x and z in time: u = (-y + a cos t, x, cos t), a = 1/2
+// (time and position do not commute here, so a backward trajectory that reads v at the wrong
+// time is caught). Exact, with w = x + i y: w(T) = e^{iT} [w0 + a/2 (T + (1 - e^{-2iT})/(2i))],
+// z(T) = z0 + sin T.
+constexpr double forcing = 0.5;
 void rotation(double t, const double x[3], double u[3])
 {
-    u[0] = -x[1];
+    u[0] = -x[1] + forcing * std::cos(t);
     u[1] = x[0];
     u[2] = std::cos(t);
 }
@@ -142,8 +146,10 @@ TEST(Trajectory, OrderOfConvergenceOnRotation)
 {
     const VelocityField v = rotation;
     const double T = 2.0, x0[3] = {1.0, 0.5, -0.3};
-    const double exact[3] = {x0[0] * std::cos(T) - x0[1] * std::sin(T),
-                             x0[0] * std::sin(T) + x0[1] * std::cos(T), x0[2] + std::sin(T)};
+    const std::complex<double> I(0.0, 1.0);
+    const std::complex<double> w = std::exp(I * T) *
+        (std::complex<double>(x0[0], x0[1]) + forcing / 2.0 * (T + (1.0 - std::exp(-2.0 * I * T)) / (2.0 * I)));
+    const double exact[3] = {w.real(), w.imag(), x0[2] + std::sin(T)};
     for (TrajectoryScheme s : {TrajectoryScheme::Euler, TrajectoryScheme::Heun, TrajectoryScheme::RK4}) {
         std::vector<double> errF, errB;
         for (int M : {16, 32, 64, 128}) {
