@@ -14,6 +14,8 @@
 //                           Omega_r (default: direct for uniform, adjoint for linear)
 //     --realisations R      independent samples of the velocity field (4.5)
 //     --points N            trajectories per realisation (per radius for the adjoint method)
+//     --points-at r:N,...   the adjoint method's points for the given radii (small balls at late
+//                           times, which few backward trajectories reach from D, need more)
 //     --sizes n             sizes in the spectrum files
 //     --beta 0.0039 --L 1000 --R 100   the paper's parameters
 //     --n0 4 --n 8          log parts and harmonics per part of the field (5.15)
@@ -77,7 +79,7 @@ int main(int argc, char** argv)
 {
     std::map<std::string, std::string> a{{"study", "uniform"}, {"out", "."}, {"times", "1.25,55"},
         {"radii", ""}, {"sp-radii", "10,100"}, {"method", ""}, {"realisations", "16"},
-        {"points", "500"}, {"sizes", "20"}, {"beta", "0.0039"}, {"L", "1000"}, {"R", "100"},
+        {"points", "500"}, {"points-at", ""}, {"sizes", "20"}, {"beta", "0.0039"}, {"L", "1000"}, {"R", "100"},
         {"n0", "4"}, {"n", "8"}, {"dt", "0.05"}, {"scheme", "RK4"}, {"seed", "2026"}};
     for (int i = 1; i < argc; ++i) {
         std::string k = argv[i];
@@ -106,6 +108,16 @@ int main(int argc, char** argv)
         const std::size_t N = std::stoul(a["points"]), nSizes = std::stoul(a["sizes"]);
         TrajectoryOptions o{trajectorySchemeFromName(a["scheme"]), std::stod(a["dt"])};
         const std::uint64_t seed = std::stoull(a["seed"]);
+        std::map<double, std::size_t> pointsAt;
+        {
+            std::stringstream ss(a["points-at"]);
+            std::string item;
+            while (std::getline(ss, item, ',')) {
+                const auto colon = item.find(':');
+                if (colon == std::string::npos) throw std::invalid_argument("--points-at r:N,...");
+                pointsAt[std::stod(item.substr(0, colon))] = std::stoul(item.substr(colon + 1));
+            }
+        }
 
         PseudoTurbulenceParameters pp;
         pp.epsilon = 1.0;
@@ -159,9 +171,10 @@ int main(int argc, char** argv)
                     trajectories += N;
                 } else {
                     for (std::size_t k = 0; k < all.size(); ++k) {
+                        const std::size_t Nk = pointsAt.count(all[k]) ? pointsAt[all[k]] : N;
                         est.push_back(adjointIntegral(v, o, sol, t, Sphere{{{0.0, 0.0, 0.0}}, all[k]},
-                                                      N, mix(seed + 2 + k, std::uint64_t(r))));
-                        trajectories += N;
+                                                      Nk, mix(seed + 2 + k, std::uint64_t(r))));
+                        trajectories += Nk;
                     }
                 }
                 for (std::size_t k = 0; k < all.size(); ++k) {
