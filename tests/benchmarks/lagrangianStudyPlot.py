@@ -41,6 +41,14 @@ def times(d, prefix):
 def uniform(d, R):
     for n, t in enumerate(times(d, "functionals_t"), start=1):
         f = read(os.path.join(d, f"functionals_t{t}.csv"))
+        k = int(np.argmin(abs(f["r"] - R)))
+        far = f["In_det"][-1]
+        half = f["r"][np.argmax(f["In"] >= 0.5 * far)]
+        ok = f["ratio_realisations"] > 0
+        print(f"t' = {t}: In(R')/S = {f['In'][k]:.4g} +- {f['In_hw'][k]:.2g}, deterministic "
+              f"{f['In_det'][k]:.4g} (ratio {f['In_det'][k] / f['In'][k]:.3g}); half the clusters "
+              f"within r' = {half:g}; max |<Ms> - Ms-bar| = "
+              f"{np.max(abs(f['Ms'] - f['Ms_det'])[ok]):.2g} over the {ok.sum()} radii with clusters")
         fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
         for ax, zoom in zip(axes, (False, True)):
             sel = f["r"] <= 2 * R if zoom else f["r"] > 0
@@ -68,6 +76,15 @@ def linear(d, R):
             if not os.path.exists(p):
                 continue
             s = read(p)
+            below = [int(l) for l, m, h, dd in zip(s["l"], s["Sp"], s["Sp_hw"], s["Sp_det"])
+                     if m + h < dd]
+            within = [int(l) for l, m, h, dd in zip(s["l"], s["Sp"], s["Sp_hw"], s["Sp_det"])
+                      if abs(m - dd) <= h]
+            print(f"t' = {t}, r' = {rr:g}: <Sp_l> + interval below Sp-bar for l = {below}; "
+                  f"Sp-bar inside the interval for l = {within}; Sp_5/Sp-bar = "
+                  f"{s['Sp'][4] / s['Sp_det'][4]:.3f} +- {s['Sp_hw'][4] / s['Sp_det'][4]:.3f}, "
+                  f"Sp_10/Sp-bar = {s['Sp'][9] / s['Sp_det'][9]:.3f} +- "
+                  f"{s['Sp_hw'][9] / s['Sp_det'][9]:.3f}")
             fig, ax = plt.subplots(figsize=(6, 4.2))
             ok = s["Sp_det"] > 0
             ax.semilogy(s["l"][ok], s["Sp_det"][ok], "k-o", ms=3, label="deterministic $\\overline{Sp}$")
@@ -85,6 +102,9 @@ def linear(d, R):
             fig_no += 1
     for t in ts:
         f = read(os.path.join(d, f"functionals_t{t}.csv"))
+        for r, m, h, dd, n in zip(f["r"], f["Ms"], f["Ms_hw"], f["Ms_det"], f["ratio_realisations"]):
+            print(f"t' = {t}, r' = {r:g}: <Ms> - 1 = {m - 1:.5f} +- {h:.1e}, Ms-bar - 1 = {dd - 1:.5f}"
+                  f" ({n:g} realisations with clusters)")
         fig, ax = plt.subplots(figsize=(6, 4.2))
         ax.plot(f["r"], f["Ms_det"], "k-o", ms=3, label="deterministic $\\overline{Ms}$")
         ax.plot(f["r"], f["Ms"], "k--s", ms=3, label="stochastic $\\langle Ms\\rangle$")
