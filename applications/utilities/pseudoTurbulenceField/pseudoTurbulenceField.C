@@ -9,7 +9,7 @@
 // face centres; other patches (zeroGradient, empty, ...) are left to their type.
 //
 // system/pseudoTurbulenceDict:
-//     epsilon 1e-3; nu 1.5e-5;   // or: u0 0.1; eta 1e-3;  (one pair)
+//     epsilon 1e-3; nu 1.5e-5;   // or: u0 0.1; eta 1e-3;  or: epsilon 1; eta 2; (one pair)
 //     L 0.1;                     // integral scale: k0 = 2 pi / L, kmax = 2 pi / eta
 //     logIntervals 4;            // n0 of the log-scale refinement (5.15)
 //     nPerInterval 8;            // harmonics per part
@@ -59,6 +59,16 @@ int main(int argc, char* argv[])
             (
                 readScalar(dict.lookup("u0")), readScalar(dict.lookup("eta")), L, n0, n
             );
+        }
+        else if (!dict.found("nu"))
+        {
+            // epsilon and eta as given: k0 = 2 pi / L, kmax = 2 pi / eta (what the core's
+            // studies build, so that a seed gives the same field bit for bit)
+            p.epsilon = readScalar(dict.lookup("epsilon"));
+            p.k0 = constant::mathematical::twoPi/L;
+            p.kmax = constant::mathematical::twoPi/readScalar(dict.lookup("eta"));
+            p.logIntervals = n0;
+            p.nPerInterval = n;
         }
         else
         {
