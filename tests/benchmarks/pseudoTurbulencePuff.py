@@ -6,25 +6,26 @@
     pseudoTurbulencePuff.py compare CASE REF.csv T       clusters and mass in the unions of cells
                                                          with centres in |x| <= r, against REF
 
-A cube [-12, 12]^3 of 48^3 cells (h = 0.5); monomers of density 1 in the cells with centres in
+A cube [-12, 12]^3 of 48^3 cells (h = 0.5; PUFF_NX in the environment changes the 48); monomers of density 1 in the cells with centres in
 |x| <= 4 (sphereToCell); Saffman-Turner kernel with K_11 = 1 (K0 = 1/8); no dispersion; U one
 sample of the pseudo-turbulence with epsilon = 1, eta = 2 (4 cells), L = 24, 4 x 8 harmonics,
 interpolated to the particles by cellPoint.
 """
+import os
 import sys
 
 import numpy as np
 
-NX, HALF = 48, 12.0
+NX, HALF = int(os.environ.get("PUFF_NX", "48")), 12.0
 H = 2 * HALF / NX
 
 
 def setup(case, n_per_cell, seed):
     open(case + "/system/blockMeshDict", "w").write("""FoamFile { version 2.0; format ascii; class dictionary; object blockMeshDict; }
 vertices ( (-12 -12 -12) (12 -12 -12) (12 12 -12) (-12 12 -12) (-12 -12 12) (12 -12 12) (12 12 12) (-12 12 12) );
-blocks ( hex (0 1 2 3 4 5 6 7) (48 48 48) simpleGrading (1 1 1) );
+blocks ( hex (0 1 2 3 4 5 6 7) (%d %d %d) simpleGrading (1 1 1) );
 boundary ( walls { type wall; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2) (0 3 2 1) (4 5 6 7)); } );
-""")
+""" % (NX, NX, NX))
     open(case + "/system/topoSetDict", "w").write("""FoamFile { version 2.0; format ascii; class dictionary; object topoSetDict; }
 actions ( { name puff; type cellZoneSet; action new; source sphereToCell; sourceInfo { origin (0 0 0); radius 4; } } );
 """)

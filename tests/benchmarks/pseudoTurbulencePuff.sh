@@ -4,15 +4,17 @@
 # pseudoTurbulenceField writes one sample of (5.14) into U; coagulationFoam (SWA, Saffman-Turner
 # K_11 = 1, no dispersion) runs to T; the clusters and mass in balls of cells are compared with
 # the Lagrangian direct estimator (3.14) in the same analytic field (pseudoTurbulencePuff).
-#   tests/benchmarks/pseudoTurbulencePuff.sh [OUTDIR] [PARTICLES_PER_CELL=16] [SEED=1] [T=2]
+#   [PUFF_NX=48] tests/benchmarks/pseudoTurbulencePuff.sh [OUTDIR] [PARTICLES_PER_CELL=16] [SEED=1] [T=2]
+# (PUFF_NX: cells per side of the cube [-12, 12]^3)
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 . "$here/../../etc/functions"
 out="${1:-/tmp/pseudoTurbulencePuff}"; n="${2:-16}"; seed="${3:-1}"; T="${4:-2}"
 py="$COAGULATIONFOAM_DIR/tests/benchmarks/pseudoTurbulencePuff.py"
 rm -rf "$out"; mkdir -p "$out"
+nx="${PUFF_NX:-48}"
 "$COAGULATIONFOAM_BUILD/tests/benchmarks/pseudoTurbulencePuff" --seed "$seed" --T "$T" \
-    --points 40000 > "$out/lagrangian.csv" 2> "$out/lagrangian.log"
+    --h "$(awk -v n="$nx" 'BEGIN{print 24/n}')" --points 40000 > "$out/lagrangian.csv" 2> "$out/lagrangian.log"
 cp -r "$COAGULATIONFOAM_DIR/tutorials/constantKernelDuct" "$out/case"
 cd "$out/case"
 cleanCase
