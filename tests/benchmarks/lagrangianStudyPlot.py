@@ -85,7 +85,7 @@ def linear(d, R):
                   f"{s['Sp'][4] / s['Sp_det'][4]:.3f} +- {s['Sp_hw'][4] / s['Sp_det'][4]:.3f}, "
                   f"Sp_10/Sp-bar = {s['Sp'][9] / s['Sp_det'][9]:.3f} +- "
                   f"{s['Sp_hw'][9] / s['Sp_det'][9]:.3f}")
-            fig, ax = plt.subplots(figsize=(6, 4.2))
+            fig, (ax, ax2) = plt.subplots(1, 2, figsize=(11, 4.2))
             ok = s["Sp_det"] > 0
             ax.semilogy(s["l"][ok], s["Sp_det"][ok], "k-o", ms=3, label="deterministic $\\overline{Sp}$")
             ax.semilogy(s["l"][ok], s["Sp"][ok], "k--s", ms=3, label="stochastic $\\langle Sp\\rangle$")
@@ -96,6 +96,14 @@ def linear(d, R):
             ax.set_ylabel("$Sp(r', t', l)$")
             ax.set_title(f"Fig. {fig_no}: linear IC, r' = {rr:g}, t' = {t}")
             ax.legend(fontsize=8)
+            ratio, hw = s["Sp"][ok] / s["Sp_det"][ok], s["Sp_hw"][ok] / s["Sp_det"][ok]
+            ax2.axhline(1.0, color="k", lw=1, label="deterministic")
+            ax2.plot(s["l"][ok], ratio, "k--s", ms=3, label="stochastic / deterministic")
+            ax2.fill_between(s["l"][ok], ratio - hw, ratio + hw, color="0.8", label="95 % interval")
+            ax2.set_xlabel("size $l$")
+            ax2.set_ylabel("$\\langle Sp\\rangle / \\overline{Sp}$")
+            ax2.set_title("the same, relative to the deterministic case")
+            ax2.legend(fontsize=8)
             fig.tight_layout()
             fig.savefig(os.path.join(d, f"fig{fig_no}_Sp_t{t}_r{rr:g}.png"), dpi=110)
             plt.close(fig)
