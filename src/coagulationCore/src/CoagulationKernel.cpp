@@ -71,6 +71,16 @@ void SaffmanTurnerKernel::basis(const ParticleType& z, double* phi) const
     phi[3] = c * c;
 }
 
+double saffmanTurnerK0(double epsilon, double nu, double V1)
+{
+    for (double v : {epsilon, nu, V1})
+        if (!(v > 0.0) || !std::isfinite(v))
+            throw std::invalid_argument(
+                "coag::saffmanTurnerK0: epsilon, nu and V1 must be positive and finite");
+    const double pi = 3.14159265358979323846;
+    return std::sqrt(pi * pi * epsilon / (120.0 * nu)) * V1;   // (1.2), (5.2)
+}
+
 std::vector<std::string> kernelNames()
 {
     return {"constant", "additive", "multiplicative", "saffmanTurner"};

@@ -11,7 +11,10 @@ B35-B37 in the field-driven sources (issue 15 item 5); B40-B46 in the random wal
 velocity interpolation (issue 15), B47 in the per-patch balance; B50-B54 in the
 pseudo-turbulence model (issue 17, core tests only: plant, `make coagulationCoreTests`, run
 `--gtest_filter='PseudoTurbulence*'`, revert; run.sh's ./Allwmake rebuild works too); B60-B66
-in the 2-D coagulation-diffusion collocation reference (issue 16, core tests). B14-B17 now
+in the 2-D coagulation-diffusion collocation reference (issue 16, core tests); B70-B79 in the
+trajectory integrators, the homogeneous table and the Lagrangian estimators (issue 17 part 2,
+core tests only: plant, `make coagulationCoreTests`, run
+`--gtest_filter='Lagrangian*:Trajectory*'`, revert). B14-B17 now
 sit in the coagulationPost package (the campaign measured them in the scripts it came from).
 
     bugs.py list                 id, file, targeted tests, what the bug is
@@ -46,6 +49,12 @@ EULER2D = "src/coagulationCore/src/CoagulationDiffusionReference.cpp"
 ANALYTIC = "src/python/coagulationPost/analytic.py"
 # The randomized spectral model of pseudo-turbulence (issue 17), core only
 PSEUDO = "src/coagulationCore/src/PseudoTurbulence.cpp"
+# The Lagrangian trajectory methods (issue 17 part 2), core only
+TRAJ = "src/coagulationCore/src/Trajectory.cpp"
+TABLE = "src/coagulationCore/src/HomogeneousTable.cpp"
+LAGR = "src/coagulationCore/src/LagrangianCoagulation.cpp"
+LAGRH = "src/coagulationCore/include/coagulation/LagrangianCoagulation.hpp"
+LAGT = "core.Lagrangian|core.Trajectory"
 
 # Every targeted run includes the fault and bad-input cases
 ALWAYS = "case_faults|case_badInput"
@@ -298,6 +307,56 @@ BUGS = {
             "            const double kj = std::pow(s0, -1.5) + gamma * (std::pow(s1, -1.5) - std::pow(s0, -1.5));\n",
             "core.PseudoTurbulence",
             "pseudo-turbulence: k_j uniform on Delta_j, not by (5.16)"),
+    "B70": (TRAJ,
+            "        for (int c = 0; c < 3; ++c) u[c] = -u[c];\n",
+            "",
+            LAGT,
+            "backward trajectory (4.2) with +v, not -v"),
+    "B71": (TRAJ,
+            "        for (int c = 0; c < 3; ++c) y[c] = x[c] + 0.5 * h * k2[c];\n",
+            "        for (int c = 0; c < 3; ++c) y[c] = x[c] + 0.5 * h * k1[c];\n",
+            LAGT,
+            "RK4: third stage from k1, not k2 (k3 = k2)"),
+    "B72": (TRAJ,
+            "        v(t + h, y, k2);\n",
+            "        v(t, y, k2);\n",
+            LAGT,
+            "Heun: corrector slope at t, not t + h"),
+    "B73": (TRAJ,
+            "        v(t - tau, y, u);\n",
+            "        v(tau, y, u);\n",
+            LAGT,
+            "backward trajectory (3.6): velocity at tau, not t - tau"),
+    "B74": (TABLE,
+            "return h00 * a[i] + h10 * h * da[i] + h01 * b[i] + h11 * h * db[i];",
+            "return h00 * a[i] + h10 * da[i] + h01 * b[i] + h11 * h * db[i];",
+            LAGT,
+            "table: Hermite interpolation's first derivative term without h"),
+    "B75": (TABLE,
+            "        return scale_ * k_(a, b);\n",
+            "        return k_(a, b);\n",
+            LAGT,
+            "table: kernel not normalised by K_11 (2.32)"),
+    "B76": (LAGR,
+            "    table_.evaluate(s0 * rate_ * t, nSizes_,",
+            "    table_.evaluate(rate_ * t, nSizes_,",
+            LAGT,
+            "(2.33)/(4.4): scaled time K11 t without the initial density s0"),
+    "B77": (LAGR,
+            "    const double V = D.volume();   // x0 uniform in D = supp S^I\n",
+            "    const double V = omegas.front().volume();\n",
+            LAGT,
+            "direct estimator (3.14): weight |Omega|, not |D|"),
+    "B78": (LAGRH,
+            "    const double rho = radius * std::cbrt(u);\n",
+            "    const double rho = radius * u;\n",
+            LAGT,
+            "points in a ball: radius R u, not R u^(1/3) (not uniform)"),
+    "B79": (LAGR,
+            "        f.Sp[l] = e.total > 0.0 ? e.sizes[l] / e.total : 0.0;\n",
+            "        f.Sp[l] = e.total > 0.0 ? e.sizes[l] / e.mass : 0.0;\n",
+            LAGT,
+            "Sp (5.8) normalised by the mass, not the number"),
     "B60": (EULER2D,
             "            const double k = 0.5 * K(i, j);\n",
             "            const double k = K(i, j);\n",

@@ -112,6 +112,11 @@ public:
     bool constantBasis(int b) const override { return b == 0; }
 };
 
+//- K0 of the Saffman–Turner kernel (1.2)/(5.2) from the mean dissipation rate epsilon-bar,
+//  the kinematic viscosity nu and the monomer volume V1: K0 = (pi^2 epsilon / (120 nu))^{1/2} V1
+//  (so K11 = 8 K0). Throws std::invalid_argument unless all three are positive and finite.
+double saffmanTurnerK0(double epsilon, double nu, double V1);
+
 //- "constant", "additive", "multiplicative", "saffmanTurner"; unknown name or K0 <= 0
 //  throws std::invalid_argument.
 std::unique_ptr<CoagulationKernel> makeKernel(const std::string& name, double K0);
