@@ -14,6 +14,9 @@
 # (the slowest rank), moves/s per rank, work and wall balance (max/mean over ranks), particles
 # sent per step and kB received per step, and the particle count and mass at the end.
 #   tests/benchmarks/parallelScaling.sh [OUTDIR] [ROUNDS=3] [STEPS=1000] [WARM=600] [n=160]
+#   CASE=additiveDuct ...       the additive-kernel duct tutorial instead (deltaT 4e-4; the
+#                               issue's n = 8192: ... 2 250 250 8192)
+#   CONFIGS="1x1 2x1work" ...   a subset of the configurations
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 . "$here/../../etc/functions"
@@ -26,19 +29,28 @@ mpirunCmd=(mpirun -np 2)
 [ "$(id -u)" = 0 ] && mpirunCmd=(mpirun --allow-run-as-root -np 2)
 rm -rf "$out"; mkdir -p "$out"
 base="$out/base"
-makeScaleBox "$base"
+if [ "${CASE:-box}" = additiveDuct ]; then
+    cp -r "$COAGULATIONFOAM_DIR/tutorials/additiveKernelDuct" "$base"
+    (cd "$base" && cleanCase && runApplication blockMesh > /dev/null \
+        && foamDictionary -entry functions -remove system/controlDict > /dev/null \
+        && foamDictionary -entry sampling/tRelax -set 100 constant/coagulationProperties > /dev/null)
+    dt=4e-4
+else
+    makeScaleBox "$base"
+    dt=1e-3
+fi
 cd "$base"
-t0=$(awk -v s="$warm" 'BEGIN { print s * 1e-3 }')
-t1=$(awk -v s="$warm" -v m="$steps" 'BEGIN { print (s + m) * 1e-3 }')
+t0=$(awk -v s="$warm" -v d="$dt" 'BEGIN { print s * d }')
+t1=$(awk -v s="$warm" -v m="$steps" -v d="$dt" 'BEGIN { print (s + m) * d }')
 foamDictionary -entry endTime -set "$t0" system/controlDict > /dev/null
 # two writes: the weights written at the second average over its half of the start
-foamDictionary -entry writeInterval -set "$(awk -v s="$warm" 'BEGIN { print s * 5e-4 }')" system/controlDict > /dev/null
+foamDictionary -entry writeInterval -set "$(awk -v s="$warm" -v d="$dt" 'BEGIN { print s * d / 2 }')" system/controlDict > /dev/null
 foamDictionary -entry statisticalWeight/n -set "$n" constant/coagulationProperties > /dev/null
 foamDictionary -entry cloudFunctions -add "{ work { type cellWork; } }" constant/coagulationProperties > /dev/null
 OMP_NUM_THREADS=2 coagulationFoam > log.warm 2>&1 || { tail log.warm; exit 1; }
 foamDictionary -entry endTime -set "$t1" system/controlDict > /dev/null
 # writeInterval counts from the start time
-foamDictionary -entry writeInterval -set "$(awk -v m="$steps" 'BEGIN { print m * 1e-3 }')" system/controlDict > /dev/null
+foamDictionary -entry writeInterval -set "$(awk -v m="$steps" -v d="$dt" 'BEGIN { print m * d }')" system/controlDict > /dev/null
 
 setDecomposition()
 {
@@ -55,7 +67,7 @@ DICT
 printf "%-13s %3s %8s %10s %10s %10s %8s %8s %9s %8s %9s %12s\n" config round wall_s \
     coag_ms transp_ms moves/s/rk workBal wallBal sent/step kB/step particles mass | tee "$out/runs.txt"
 for r in $(seq 1 "$rounds"); do
-    for config in 1x1 2x1work 1x2 2x1simple 2x1cloudMove; do
+    for config in ${CONFIGS:-1x1 2x1work 1x2 2x1simple 2x1cloudMove}; do
         c="$out/${config}_$r"
         cp -r "$base" "$c"
         cd "$c"
