@@ -23,6 +23,9 @@
 //     --seed S
 // Files in DIR: functionals_t<t>.csv (r, In, Ms: stochastic mean, 95 % half-width, deterministic),
 // spectrum_t<t>_r<r>.csv (l, Sp and In_l likewise), timing.csv; a summary on stdout.
+// <Sp_l> = <In_l>/<In> and <Ms> = <mass>/<In> over all realisations (ExpectationFunctionals);
+// the columns *_perRealisation hold the mean of each realisation's own ratio over the
+// realisations with a cluster in Omega_r (not the paper's functional; kept for comparison).
 #include "coagulation/LagrangianCoagulation.hpp"
 #include "coagulation/PseudoTurbulence.hpp"
 
@@ -68,9 +71,12 @@ std::uint64_t mix(std::uint64_t a, std::uint64_t b)
     return z ^ (z >> 31);
 }
 
-// Per radius: In over all realisations; ratios (Ms, Sp) over those with a nonzero In
+// Per radius: the functionals of the expectations (the paper's <In>, <Ms> = <mass>/<In>,
+// <Sp_l> = <In_l>/<In>), and for comparison the mean of each realisation's ratios over the
+// realisations with a cluster in Omega_r (a biased estimator with few points per realisation)
 struct RadiusStats {
-    RealisationStatistics all, ratio;
+    ExpectationFunctionals expect;
+    RealisationStatistics ratio;
 };
 
 } // namespace
@@ -179,7 +185,7 @@ int main(int argc, char** argv)
                 }
                 for (std::size_t k = 0; k < all.size(); ++k) {
                     const SphereFunctionals f = functionals(est[k]);
-                    st[k].all.add(f.flatten());
+                    st[k].expect.add(est[k]);
                     if (est[k].total > 0.0) st[k].ratio.add(f.flatten());
                 }
             }
@@ -194,9 +200,9 @@ int main(int argc, char** argv)
                         double(trajectories) / wall, cpu, double(trajectories) / cpu);
 
             auto summary = [&](std::size_t k) {
-                const SphereFunctionals m = SphereFunctionals::unflatten(st[k].all.mean());
-                const SphereFunctionals h = SphereFunctionals::unflatten(st[k].all.halfWidth95());
-                SphereFunctionals mr = m, hr = h;
+                const SphereFunctionals m = st[k].expect.mean();
+                const SphereFunctionals h = st[k].expect.halfWidth95();
+                SphereFunctionals mr = m, hr = h;   // the per-realisation ratios' mean
                 if (st[k].ratio.count() > 0) {
                     mr = SphereFunctionals::unflatten(st[k].ratio.mean());
                     hr = SphereFunctionals::unflatten(st[k].ratio.halfWidth95());
@@ -204,26 +210,30 @@ int main(int argc, char** argv)
                 return std::make_tuple(m, h, mr, hr, deterministicFunctionals(sol, t, all[k]));
             };
             std::ofstream fr(a["out"] + "/functionals_t" + fmt(t) + ".csv");
-            fr << "r,In,In_hw,In_det,Ms,Ms_hw,Ms_det,ratio_realisations\n";
+            fr << "r,In,In_hw,In_det,Ms,Ms_hw,Ms_det,ratio_realisations,Ms_perRealisation,Ms_perRealisation_hw\n";
             for (std::size_t k = 0; k < radii.size(); ++k) {
                 auto [m, h, mr, hr, d] = summary(k);
-                (void)mr;
-                fr << all[k] << "," << m.In << "," << h.In << "," << d.In << "," << mr.Ms << ","
-                   << hr.Ms << "," << d.Ms << "," << st[k].ratio.count() << "\n";
+                fr << all[k] << "," << m.In << "," << h.In << "," << d.In << "," << m.Ms << ","
+                   << h.Ms << "," << d.Ms << "," << st[k].ratio.count() << "," << mr.Ms << ","
+                   << hr.Ms << "\n";
             }
             for (std::size_t k : spIndex) {
                 auto [m, h, mr, hr, d] = summary(k);
                 std::ofstream fs(a["out"] + "/spectrum_t" + fmt(t) + "_r" + fmt(all[k]) + ".csv");
-                fs << "l,Sp,Sp_hw,Sp_det,In_l,In_l_hw,In_l_det\n";
+                fs << "l,Sp,Sp_hw,Sp_det,In_l,In_l_hw,In_l_det,Sp_perRealisation,Sp_perRealisation_hw\n";
                 for (std::size_t l = 0; l < nSizes; ++l)
-                    fs << l + 1 << "," << mr.Sp[l] << "," << hr.Sp[l] << "," << d.Sp[l] << ","
-                       << m.In_l[l] << "," << h.In_l[l] << "," << d.In_l[l] << "\n";
+                    fs << l + 1 << "," << m.Sp[l] << "," << h.Sp[l] << "," << d.Sp[l] << ","
+                       << m.In_l[l] << "," << h.In_l[l] << "," << d.In_l[l] << "," << mr.Sp[l]
+                       << "," << hr.Sp[l] << "\n";
                 std::printf("  r' = %g: In/S %.4g +- %.2g (det %.4g), Ms %.6f +- %.1e (det %.6f), "
-                            "Sp_5/det %.3f +- %.3f, Sp_10/det %.3f +- %.3f\n",
-                            all[k], m.In, h.In, d.In, mr.Ms, hr.Ms, d.Ms,
-                            mr.Sp[4] / d.Sp[4], hr.Sp[4] / d.Sp[4],
-                            nSizes >= 10 ? mr.Sp[9] / d.Sp[9] : 0.0,
-                            nSizes >= 10 ? hr.Sp[9] / d.Sp[9] : 0.0);
+                            "Sp_2/det %.3f +- %.3f, Sp_5/det %.3f +- %.3f, Sp_10/det %.3f +- %.3f "
+                            "(mean of per-realisation ratios, %zu realisations with clusters: "
+                            "Sp_5/det %.3f, Sp_10/det %.3f)\n",
+                            all[k], m.In, h.In, d.In, m.Ms, h.Ms, d.Ms, m.Sp[1] / d.Sp[1],
+                            h.Sp[1] / d.Sp[1], m.Sp[4] / d.Sp[4], h.Sp[4] / d.Sp[4],
+                            nSizes >= 10 ? m.Sp[9] / d.Sp[9] : 0.0,
+                            nSizes >= 10 ? h.Sp[9] / d.Sp[9] : 0.0, st[k].ratio.count(),
+                            mr.Sp[4] / d.Sp[4], nSizes >= 10 ? mr.Sp[9] / d.Sp[9] : 0.0);
             }
         }
     } catch (const std::exception& e) {

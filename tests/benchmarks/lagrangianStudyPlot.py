@@ -8,6 +8,7 @@
                                               and R'; Figs 7-8: <Ms(r', t')> against r'
 
 Stochastic: dashed, with the 95 % interval over the velocity realisations (dotted / band);
+<Sp_l> = <In_l>/<In>, <Ms> = <mass>/<In> (the functionals of the expectation (4.5));
 deterministic (mean velocity, (5.3)): solid. Writes fig*.png into DIR.
 """
 import csv

@@ -4,6 +4,7 @@
 #include "coagulation/Dispersion.hpp"        // CounterStream
 #include "coagulation/SizeDistribution.hpp"  // studentT975
 
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
@@ -297,6 +298,63 @@ std::vector<double> RealisationStatistics::halfWidth95() const
     const double q = studentT975(double(n_ - 1));
     for (std::size_t i = 0; i < h.size(); ++i)
         h[i] = q * std::sqrt(m2_[i] / double(n_ - 1) / double(n_));
+    return h;
+}
+
+void ExpectationFunctionals::add(const IntegralEstimate& e)
+{
+    std::vector<double> row{e.total, e.mass};
+    row.insert(row.end(), e.sizes.begin(), e.sizes.end());
+    if (!rows_.empty() && row.size() != rows_.front().size())
+        throw std::invalid_argument("coag::ExpectationFunctionals::add: number of sizes changed");
+    rows_.push_back(std::move(row));
+}
+
+std::vector<double> ExpectationFunctionals::means() const
+{
+    if (rows_.empty()) throw std::logic_error("coag::ExpectationFunctionals: no realisation");
+    std::vector<double> m(rows_.front().size(), 0.0);
+    for (const auto& r : rows_)
+        for (std::size_t i = 0; i < m.size(); ++i) m[i] += r[i];
+    for (double& x : m) x /= double(rows_.size());
+    return m;
+}
+
+SphereFunctionals ExpectationFunctionals::mean() const
+{
+    const std::vector<double> m = means();
+    SphereFunctionals f;
+    f.In = m[0];
+    f.Ms = m[0] > 0.0 ? m[1] / m[0] : 0.0;
+    f.In_l.assign(m.begin() + 2, m.end());
+    f.Sp.resize(f.In_l.size());
+    for (std::size_t l = 0; l < f.Sp.size(); ++l) f.Sp[l] = m[0] > 0.0 ? f.In_l[l] / m[0] : 0.0;
+    return f;
+}
+
+SphereFunctionals ExpectationFunctionals::halfWidth95() const
+{
+    const std::vector<double> m = means();
+    const std::size_t n = rows_.size(), k = m.size();
+    SphereFunctionals h;
+    h.In_l.assign(k - 2, 0.0);
+    h.Sp.assign(k - 2, 0.0);
+    if (n < 2) return h;
+    const double q = studentT975(double(n - 1)) / std::sqrt(double(n));
+    // sd of a_i - Q b_i (Q = 0: the plain sd of a_i)
+    auto sd = [&](std::size_t a, std::size_t b, double Q) {
+        double mu = 0.0, s2 = 0.0;
+        for (const auto& r : rows_) mu += r[a] - Q * r[b];
+        mu /= double(n);
+        for (const auto& r : rows_) s2 += (r[a] - Q * r[b] - mu) * (r[a] - Q * r[b] - mu);
+        return std::sqrt(s2 / double(n - 1));
+    };
+    h.In = q * sd(0, 0, 0.0);
+    if (m[0] > 0.0) h.Ms = q * sd(1, 0, m[1] / m[0]) / m[0];
+    for (std::size_t l = 0; l + 2 < k; ++l) {
+        h.In_l[l] = q * sd(l + 2, 0, 0.0);
+        if (m[0] > 0.0) h.Sp[l] = q * sd(l + 2, 0, m[l + 2] / m[0]) / m[0];
+    }
     return h;
 }
 

@@ -14,7 +14,8 @@ pseudo-turbulence model (issue 17, core tests only: plant, `make coagulationCore
 in the 2-D coagulation-diffusion collocation reference (issue 16, core tests); B70-B79 in the
 trajectory integrators, the homogeneous table and the Lagrangian estimators (issue 17 part 2,
 core tests only: plant, `make coagulationCoreTests`, run
-`--gtest_filter='Lagrangian*:Trajectory*'`, revert). B14-B17 now
+`--gtest_filter='Lagrangian*:Trajectory*'`, revert); B100 in the functionals of the expectation
+(issue 17, the same way). B14-B17 now
 sit in the coagulationPost package (the campaign measured them in the scripts it came from).
 
     bugs.py list                 id, file, targeted tests, what the bug is
@@ -357,6 +358,11 @@ BUGS = {
             "        f.Sp[l] = e.total > 0.0 ? e.sizes[l] / e.mass : 0.0;\n",
             LAGT,
             "Sp (5.8) normalised by the mass, not the number"),
+    "B100": (LAGR,
+            "        if (m[0] > 0.0) h.Sp[l] = q * sd(l + 2, 0, m[l + 2] / m[0]) / m[0];\n",
+            "        if (m[0] > 0.0) h.Sp[l] = q * sd(l + 2, 0, 0.0) / m[0];\n",
+            LAGT,
+            "<Sp> = <In_l>/<In>: interval without the delta method's -Q In term"),
     "B60": (EULER2D,
             "            const double k = 0.5 * K(i, j);\n",
             "            const double k = K(i, j);\n",

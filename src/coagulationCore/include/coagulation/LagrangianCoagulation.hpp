@@ -153,6 +153,27 @@ private:
     std::vector<double> mean_, m2_;
 };
 
+//- The functionals of the expectations (4.5), the paper's <In_l>, <In>, <Ms>, <Sp> (§5): <n^E>
+//  is averaged over the velocity realisations first ((4.5), (5.17), (5.19)), then
+//      <Ms> = <int sum l n_l> / <In>,   <Sp_l> = <In_l> / <In>                (5.7), (5.8)
+//  (ratios of means over all realisations, those with no cluster in Omega_r included). The
+//  mean over realisations of each realisation's ratio is not this: it is undefined where
+//  Omega_r holds no cluster, and with a few Monte Carlo points per realisation it is a biased
+//  ratio estimator (one hit scores (S^I)^(l-1), not the In-weighted mean). Half-widths: Student
+//  t over the realisations, ratios Q = <A>/<B> by the delta method,
+//  t_{0.975, R-1} sd(A_i - Q B_i) / (sqrt(R) <B>).
+class ExpectationFunctionals {
+public:
+    void add(const IntegralEstimate& e);
+    std::size_t count() const { return rows_.size(); }
+    SphereFunctionals mean() const;
+    SphereFunctionals halfWidth95() const;
+
+private:
+    std::vector<std::vector<double>> rows_;   //- {In, mass, In_1..In_n} per realisation
+    std::vector<double> means() const;
+};
+
 template <class Stream>
 void Sphere::sample(Stream& rng, double x[3]) const
 {
