@@ -158,6 +158,7 @@ int figs9to10(const Args& a)
     coag::MonodisperseData data;
     data.support = coag::Box::centred(2, 1.0);
     std::printf("x,b,t,ND,NCD,ND_est,ND_hw,NCD_est,NCD_hw\n");
+    std::uint64_t stream = 0;
     for (double xp : {0.0, 1.5}) {
         const double x[2] = {xp, 0.0};
         for (double b : {0.01, 0.1, 1.0}) {
@@ -168,8 +169,9 @@ int figs9to10(const Args& a)
                 const double t = tmax * k / (nt - 1);
                 const double ND = coag::exact::diffusedSquare(1.0, 1.0, 1.0, t, xp, 0.0);  // (29)
                 const double NCD = table.u(1, t) * ND;                                      // (30)
-                const coag::Estimate d = eD.adjointPoint(t, x, N, seed + 2 * k);
-                const coag::Estimate c = eCD.adjointPoint(t, x, N, seed + 2 * k + 1);
+                // independent paths for every estimate (N^D is estimated anew for each b)
+                const coag::Estimate d = eD.adjointPoint(t, x, N, seed * 1000003 + stream++);
+                const coag::Estimate c = eCD.adjointPoint(t, x, N, seed * 1000003 + stream++);
                 std::printf("%g,%g,%.6g,%.8g,%.8g,%.8g,%.3g,%.8g,%.3g\n", xp, b, t, ND, NCD,
                             d.mean[0], d.halfWidth[0], c.mean[0], c.halfWidth[0]);
             }
