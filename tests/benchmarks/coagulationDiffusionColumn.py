@@ -14,7 +14,8 @@
                             (sqrt(sum w^2)/V), beside n^E and n^L of the Eulerian reference
                             (tests/benchmarks/eulerianReference's CSV); n^E and n^L are taken at
                             x = 0 and scaled by the diffusion factor's average over the central
-                            square (N^D averaged / N^D at 0, the exact Gaussian integral);
+                            square (N^D averaged / N^D at 0, the exact Gaussian integral; the
+                            last column, f);
                             exit 1 unless every |z| against n^E is below 4 and n^L is off by
                             more than 5 standard errors somewhere at the last time (t' = 10)
 """
@@ -82,7 +83,7 @@ def compare(case, ref, nx=NX, times=("1", "5", "10"), sizes=10, half=0.3):
     centre = ((np.abs(ix) < half) & (np.abs(iy) < half)).ravel()
     vol = centre.sum() * H * H * 0.1
     half = np.sqrt(centre.sum()) * H / 2        # the region the cells cover
-    print("t',l,n_coagulationFoam,se,nE,nL,z_E,z_L")
+    print("t',l,n_coagulationFoam,se,nE,nL,z_E,z_L,f")
     worst = {}
     for t in times:
         cells = cell_of(case, t)
@@ -96,7 +97,7 @@ def compare(case, ref, nx=NX, times=("1", "5", "10"), sizes=10, half=0.3):
             row = (r["t"] == float(t)) & (r["l"] == l)
             nE, nL = float(r["nE"][row][0]) * f, float(r["nL"][row][0]) * f
             zE, zL = (n - nE) / se if se > 0 else np.nan, (n - nL) / se if se > 0 else np.nan
-            print("%s,%d,%.6g,%.3g,%.6g,%.6g,%+.2f,%+.2f" % (t, l, n, se, nE, nL, zE, zL))
+            print("%s,%d,%.6g,%.3g,%.6g,%.6g,%+.2f,%+.2f,%.6g" % (t, l, n, se, nE, nL, zE, zL, f))
             worst.setdefault(t, []).append((zE, zL))
     ok = True
     for t, zs in worst.items():

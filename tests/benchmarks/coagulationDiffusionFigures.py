@@ -4,7 +4,9 @@
 build/tests/benchmarks/coagulationDiffusionFigures.
 
     coagulationDiffusionFigures.py fig2      fig2.csv      OUTDIR   -> Fig2.png
-    coagulationDiffusionFigures.py figs3to8  figs3to8.csv  OUTDIR   -> Fig3..Fig8.png
+    coagulationDiffusionFigures.py figs3to8  figs3to8.csv  OUTDIR [column.csv]  -> Fig3..Fig8.png
+        column.csv: the third column, coagulationFoam's n_l at t' = 1, 5, 10
+        (tests/benchmarks/coagulationDiffusionColumn.sh), shown at x = 0 (divided by its f)
     coagulationDiffusionFigures.py figs9to10 figs9to10.csv OUTDIR   -> Fig9.png, Fig10.png
 
 Each prints the numbers the README quotes. Exit status 1 if a check fails: fig2, the Monte
@@ -72,8 +74,23 @@ def fig2(rows, out):
     return ok
 
 
-def figs3to8(rows, out):
+def foam_rows(path):
+    """coagulationFoam's column, rescaled to x = 0: n/f and 1.96 se/f."""
+    if not path:
+        return []
+    with open(path) as f:
+        lines = [l for l in f if not l.startswith("#")]
+    rows = []
+    for r in csv.DictReader(lines):
+        f = float(r["f"])
+        rows.append((float(r["t'"]), int(r["l"]), float(r["n_coagulationFoam"]) / f,
+                     1.96 * float(r["se"]) / f, float(r["z_E"]), float(r["z_L"])))
+    return rows
+
+
+def figs3to8(rows, out, column=None):
     ok = True
+    foam = foam_rows(column)
     haveE = bool(rows[0]["nE"])
     misses, n = 0, 0
     for r in rows:  # sizes of one time share their paths: one check per time (monomers)
@@ -101,6 +118,10 @@ def figs3to8(rows, out):
         plt.plot(l, [float(r["nLexact"]) for r in rs], "-", lw=0.8, label="n^L closed form")
         if haveE:
             plt.plot(l, [float(r["nE"]) for r in rs], "s-", ms=3, label="n^E Eulerian reference")
+        fr = [x for x in foam if x[0] == tt and x[2] > 0]
+        if fr:
+            plt.errorbar([x[1] for x in fr], [x[2] for x in fr], yerr=[x[3] for x in fr], fmt="^",
+                         ms=4, mfc="none", label="coagulationFoam (95 %)")
         plt.yscale("log")
         plt.xlabel("size l")
         plt.ylabel("n_l(t', 0)")
@@ -126,6 +147,10 @@ def figs3to8(rows, out):
         plt.plot(t, [float(r["nLexact"]) for r in rs], "-", lw=0.8, label="n^L closed form")
         if haveE:
             plt.plot(t, [float(r["nE"]) for r in rs], "s-", ms=3, label="n^E Eulerian reference")
+        fr = [x for x in foam if x[1] == size]
+        if fr:
+            plt.errorbar([x[0] for x in fr], [x[2] for x in fr], yerr=[x[3] for x in fr], fmt="^",
+                         ms=5, mfc="none", label="coagulationFoam (95 %)")
         plt.xlabel("t'")
         plt.ylabel("n_%d(t', 0)" % size)
         plt.title("Fig %d: size %d at x = 0, D = 8.88e-2 R$^2$, K = 1" % (fig, size))
@@ -133,6 +158,13 @@ def figs3to8(rows, out):
         plt.tight_layout()
         plt.savefig(os.path.join(out, "Fig%d.png" % fig), dpi=110)
     print("times: %d from t' = %g to %g" % (len(times), times[0], times[-1]))
+    for tt in sorted({x[0] for x in foam}):
+        fr = [x for x in foam if x[0] == tt and x[3] > 0]
+        zE = max(abs(x[4]) for x in fr)
+        zL = max(abs(x[5]) for x in fr)
+        print("coagulationFoam at t' = %g, sizes %d..%d with particles: |z| against n^E at most "
+              "%.2f, against n^L at most %.2f; monomers %.4g +- %.2g (at x = 0)"
+              % (tt, fr[0][1], fr[-1][1], zE, zL, fr[0][2], fr[0][3]))
     return ok
 
 
@@ -185,11 +217,15 @@ def figs9to10(rows, out):
 
 
 def main(argv):
-    if len(argv) != 3 or argv[0] not in ("fig2", "figs3to8", "figs9to10"):
+    if len(argv) not in (3, 4) or argv[0] not in ("fig2", "figs3to8", "figs9to10") or (
+            len(argv) == 4 and argv[0] != "figs3to8"):
         print(__doc__)
         return 2
     os.makedirs(argv[2], exist_ok=True)
-    ok = {"fig2": fig2, "figs3to8": figs3to8, "figs9to10": figs9to10}[argv[0]](read(argv[1]), argv[2])
+    if argv[0] == "figs3to8":
+        ok = figs3to8(read(argv[1]), argv[2], argv[3] if len(argv) == 4 else None)
+    else:
+        ok = {"fig2": fig2, "figs9to10": figs9to10}[argv[0]](read(argv[1]), argv[2])
     return 0 if ok else 1
 
 
