@@ -36,8 +36,8 @@ struct Box {
     void uniform(Rng& rng, double* x) const;
 };
 
-//- Standard normals from an Rng (Box–Muller, polar form not used: two uniforms give two
-//  normals; the second is kept for the next call).
+//- Standard normals from an Rng by Box–Muller: two uniforms give two normals, the second is
+//  kept for the next call (the stream is a pure function of the seed).
 class NormalSource {
 public:
     explicit NormalSource(std::uint64_t seed) : rng_(seed) {}
