@@ -150,7 +150,9 @@ struct EffectiveSource {
 
 class LagrangianEstimator {
 public:
-    //- The table must cover tau up to t sup f for every t asked (checked per sample).
+    //- Keeps a reference to the table (which must outlive the estimator) and copies the
+    //  process and the data. The table must cover tau up to t sup f for every t asked
+    //  (checked per sample: std::out_of_range).
     LagrangianEstimator(const HomogeneousTable& table, const DiffusionProcess& process,
                         const MonodisperseData& data);
 
