@@ -5,11 +5,11 @@
 # solved by coagulationFoam itself (SWA, constant-D random walk, no effective source), its
 # n_l(t', 0), l = 1..10, at t' = 1, 5, 10 beside the converged Eulerian reference n^E and the
 # Lagrangian model n^L (tests/benchmarks/eulerianReference). About 2 minutes on 2 cores.
-#   tests/benchmarks/coagulationDiffusionColumn.sh [OUTDIR] [PARTICLES_PER_CELL=150]
+#   tests/benchmarks/coagulationDiffusionColumn.sh [OUTDIR] [PARTICLES_PER_CELL=150] [SIZES=10]
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 . "$here/../../etc/functions"
-out="${1:-/tmp/coagulationDiffusionColumn}"; n="${2:-150}"
+out="${1:-/tmp/coagulationDiffusionColumn}"; n="${2:-150}"; sizes="${3:-10}"
 py="$COAGULATIONFOAM_DIR/tests/benchmarks/coagulationDiffusionColumn.py"
 rm -rf "$out"; mkdir -p "$out"
 "$COAGULATIONFOAM_BUILD/tests/benchmarks/eulerianReference" --W 4 --gamma 1.05 --Lambda 500 \
@@ -27,4 +27,5 @@ done
 start=$(date +%s)
 runApplication coagulationFoam
 echo "coagulationFoam: $(( $(date +%s) - start )) s; $(grep 'eulerianReference:' "$out/eulerian.log")"
-"$COAGULATIONFOAM_PYTHON" "$py" compare . "$out/eulerian.csv" | tee "$out/column.csv"
+"$COAGULATIONFOAM_PYTHON" "$py" compare . "$out/eulerian.csv" 80 1,5,10 "$sizes" 0.3 \
+    | tee "$out/column.csv"

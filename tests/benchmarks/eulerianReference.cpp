@@ -5,6 +5,7 @@
 //
 //   eulerianReference [--dx 0.07] [--dt 0.0125] [--W 2] [--gamma 1.1] [--Lambda 14000]
 //                     [--D 0.0888] [--euler] [--zeroFlux] [--saffmanTurner] [--sizes 20]
+//                     [--tmax 10]   (only the times t' <= tmax of 1, 5, 10)
 //
 // Output: a CSV "t,l,nE,nL,nE/nL" on stdout, a summary line (nodes, grid, steps, wall time) on
 // stderr. nL is the Lagrangian model (9) in closed form for the constant kernel: with data
@@ -24,6 +25,7 @@ int main(int argc, char** argv)
 {
     coag::CoagulationDiffusionOptions o;
     std::size_t sizes = 20;
+    double tmax = 10.0;
     bool st = false;
     for (int a = 1; a < argc; ++a) {
         const std::string k = argv[a];
@@ -41,6 +43,7 @@ int main(int argc, char** argv)
         else if (k == "--Lambda") o.maxSize = static_cast<std::size_t>(val());
         else if (k == "--D") o.diffusion = val();
         else if (k == "--sizes") sizes = static_cast<std::size_t>(val());
+        else if (k == "--tmax") tmax = val();
         else if (k == "--euler") o.scheme = coag::CoagulationDiffusionOptions::Scheme::Euler;
         else if (k == "--zeroFlux") o.boundary = coag::CoagulationDiffusionOptions::Boundary::ZeroFlux;
         else if (k == "--saffmanTurner") st = true;
@@ -56,6 +59,7 @@ int main(int argc, char** argv)
     coag::CoagulationDiffusion2D sol(*K, o);
     std::printf("t,l,nE,nL,nE/nL\n");
     for (double t : {1.0, 5.0, 10.0}) {
+        if (t > tmax) break;
         sol.advanceTo(t);
         for (std::size_t l = 1; l <= sizes; ++l) {
             const double nE = sol.density(l, 0.0, 0.0);

@@ -15,7 +15,9 @@ in the 2-D coagulation-diffusion collocation reference (issue 16, core tests); B
 trajectory integrators, the homogeneous table and the Lagrangian estimators (issue 17 part 2,
 core tests only: plant, `make coagulationCoreTests`, run
 `--gtest_filter='Lagrangian*:Trajectory*'`, revert); B100 in the functionals of the expectation
-(issue 17, the same way). B14-B17 now
+(issue 17, the same way); B80-B89 in the Lagrangian model of issue 16
+(trajectories, estimators, effective source; core tests only,
+`--gtest_filter='LagrangianDiffusion*'`). B14-B17 now
 sit in the coagulationPost package (the campaign measured them in the scripts it came from).
 
     bugs.py list                 id, file, targeted tests, what the bug is
@@ -48,6 +50,8 @@ PSDPOST = "src/python/coagulationPost/psd.py"
 # The Eulerian coagulation-diffusion reference (issue 16)
 EULER2D = "src/coagulationCore/src/CoagulationDiffusionReference.cpp"
 ANALYTIC = "src/python/coagulationPost/analytic.py"
+# The Lagrangian coagulation-diffusion model and its estimators (issue 16 part 2), core only
+LAGRANGE = "src/coagulationCore/src/CoagulationDiffusionLagrangian.cpp"
 # The randomized spectral model of pseudo-turbulence (issue 17), core only
 PSEUDO = "src/coagulationCore/src/PseudoTurbulence.cpp"
 # The Lagrangian trajectory methods (issue 17 part 2), core only
@@ -398,6 +402,56 @@ BUGS = {
             "    if (r > 0.26) {\n",
             "core.CoagulationDiffusion",
             "explicit stability bound D dt / dx^2 <= 1/4 relaxed"),
+    "B80": (LAGRANGE,
+            "        const double s = std::sqrt(2.0 * D * T);\n",
+            "        const double s = std::sqrt(D * T);\n",
+            "core.LagrangianDiffusion",
+            "forward Gaussian step (8)/(19): variance D t instead of 2 D t"),
+    "B81": (LAGRANGE,
+            "        for (int i = 0; i < dim; ++i) x[i] += -0.5 * (v0[i] + v1[i]) * h + dW[i];\n",
+            "        for (int i = 0; i < dim; ++i) x[i] += 0.5 * (v0[i] + v1[i]) * h + dW[i];\n",
+            "core.LagrangianDiffusion",
+            "backward trajectory (16): Heun corrector runs with the drift instead of against it"),
+    "B82": (LAGRANGE,
+            "            const double w = (h ? h(X) : 1.0) / rxi;  // h(X(t))/r(xi) (15)\n",
+            "            const double w = (h ? h(X) : 1.0);  // h(X(t))/r(xi) (15)\n",
+            "core.LagrangianDiffusion",
+            "direct estimator (15): score without the 1/r(xi) weight"),
+    "B83": (LAGRANGE,
+            "    evaluate(f * t, out);  // rho(t; delta_1l f) = f u(f t) (after (18))\n",
+            "    evaluate(t, out);  // rho(t; delta_1l f) = f u(f t) (after (18))\n",
+            "core.LagrangianDiffusion",
+            "rho(t; n0) = f u(t) instead of f u(f t) (the time scaling of (18))"),
+    "B84": (LAGRANGE,
+            "        R.rowwise() -= m;\n",
+            "",
+            "core.LagrangianDiffusion",
+            "effective source (20): E[rho_i rho_j] without subtracting E[rho_i] E[rho_j]"),
+    "B85": (LAGRANGE,
+            "        const double a = sigma * std::sqrt(2.0);\n",
+            "        const double a = sigma;\n",
+            "core.LagrangianDiffusion",
+            "f_i (23): erf argument divided by sigma instead of sigma sqrt(2)"),
+    "B86": (LAGRANGE,
+            "    return 1.5 * n0 * n0 * C * P * (1.0 - P);  // F_R (22)\n",
+            "    return n0 * n0 * C * P * (1.0 - P);  // F_R (22)\n",
+            "core.LagrangianDiffusion",
+            "F_R (22) without its factor 3/2"),
+    "B87": (LAGRANGE,
+            "            e.halfWidth[l] = z95 * std::sqrt(var / n);\n",
+            "            e.halfWidth[l] = z95 * std::sqrt(var) / n;\n",
+            "core.LagrangianDiffusion",
+            "estimator interval: s/N instead of s/sqrt(N)"),
+    "B88": (LAGRANGE,
+            "        const double f0 = data_.value(X);  // zero unless x0 in Omega0\n",
+            "        const double f0 = data_.f ? data_.f(X) : data_.n0;\n",
+            "core.LagrangianDiffusion",
+            "adjoint estimator (17): x0 = X*(0) scored outside the support Omega0"),
+    "B89": (LAGRANGE,
+            "        for (int i = 0; i < dim; ++i) x[i] += 0.5 * (v0[i] + v1[i]) * h + dW[i];  // (8), Heun\n",
+            "        for (int i = 0; i < dim; ++i) x[i] += 0.5 * (v0[i] + v1[i]) * h;  // (8), Heun\n",
+            "core.LagrangianDiffusion",
+            "forward trajectory (8) with a velocity: the Heun step drops the Brownian increment"),
 }
 
 
