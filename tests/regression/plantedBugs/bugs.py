@@ -11,7 +11,9 @@ B35-B37 in the field-driven sources (issue 15 item 5); B40-B46 in the random wal
 velocity interpolation (issue 15), B47 in the per-patch balance; B50-B54 in the
 pseudo-turbulence model (issue 17, core tests only: plant, `make coagulationCoreTests`, run
 `--gtest_filter='PseudoTurbulence*'`, revert; run.sh's ./Allwmake rebuild works too); B60-B66
-in the 2-D coagulation-diffusion collocation reference (issue 16, core tests). B14-B17 now
+in the 2-D coagulation-diffusion collocation reference (issue 16, core tests); B90-B96 in the
+pair proposals of the event loop (issue 19, core tests: the sum tree's pair walk, the octave
+bins, MajorantSampler). B14-B17 now
 sit in the coagulationPost package (the campaign measured them in the scripts it came from).
 
     bugs.py list                 id, file, targeted tests, what the bug is
@@ -46,6 +48,12 @@ EULER2D = "src/coagulationCore/src/CoagulationDiffusionReference.cpp"
 ANALYTIC = "src/python/coagulationPost/analytic.py"
 # The randomized spectral model of pseudo-turbulence (issue 17), core only
 PSEUDO = "src/coagulationCore/src/PseudoTurbulence.cpp"
+# The pair proposals of the event loop (issue 19), core only
+TREE = "src/coagulationCore/include/coagulation/SumTree.hpp"
+BINS = "src/coagulationCore/include/coagulation/OctaveBins.hpp"
+BINSCPP = "src/coagulationCore/src/OctaveBins.cpp"
+PROPOSE = "src/coagulationCore/include/coagulation/MajorantSampler.hpp"
+SAMPLERTESTS = "core.SumTree|core.OctaveBins|core.MajorantSampler|core.Stores/MajorantSamplerStore"
 
 # Every targeted run includes the fault and bad-input cases
 ALWAYS = "case_faults|case_badInput"
@@ -333,6 +341,41 @@ BUGS = {
             "    if (r > 0.26) {\n",
             "core.CoagulationDiffusion",
             "explicit stability bound D dt / dx^2 <= 1/4 relaxed"),
+    "B90": (TREE,
+            "                step<false>(l, c2, u2, n2, nullptr, 0);\n",
+            "                step<false>(l, c1, u2, n2, nullptr, 0);\n",
+            SAMPLERTESTS,
+            "tree pair walk (cache-resident tree): the second factor walks the first's column"),
+    "B91": (TREE,
+            "                step<true>(l, c2, u2, n2, leafData, leafBytes);\n",
+            "                step<true>(l, c1, u2, n2, leafData, leafBytes);\n",
+            SAMPLERTESTS,
+            "tree pair walk (prefetching, > 512 kB): the second factor walks the first's column"),
+    "B92": (PROPOSE,
+            "            const double u2 = rng.uniform() * columnTotals_[second.tree];\n",
+            "            const double u2 = rng.uniform() * columnTotals_[first.tree];\n",
+            SAMPLERTESTS,
+            "pair proposal: the second factor's uniform scaled by the first factor's total"),
+    "B93": (BINS,
+            "            if (low + cell <= v) return true;\n",
+            "            return true;\n",
+            SAMPLERTESTS,
+            "octave bins: no acceptance v / top (members of a bin drawn uniformly)"),
+    "B94": (BINS,
+            "        const std::uint64_t b = static_cast<std::uint64_t>(k + 1) << 51;\n",
+            "        const std::uint64_t b = static_cast<std::uint64_t>(k) << 51;\n",
+            SAMPLERTESTS,
+            "octave bins: the bin's top taken as its bottom (acceptance saturates at 1)"),
+    "B95": (BINS,
+            "        C.sum[kNew] += significand(v);\n",
+            "        C.sum[kNew] += significand(r.value);\n",
+            SAMPLERTESTS,
+            "octave bins: a change adds the old value's significand to the bin sum"),
+    "B96": (BINSCPP,
+            "        refresh(C, k);\n        if (r != last) {\n",
+            "        if (r != last) {\n",
+            SAMPLERTESTS,
+            "octave bins: a removal leaves its bin's total stale"),
 }
 
 
