@@ -132,7 +132,7 @@ public:
     }
 
     //- sum_t coeff_t S_first,t S_second,t over n >= 2 particles (0 for fewer); keeps the
-    //  per-term rates for propose().
+    //  per-term rates and the column totals for propose() (so call it after every change).
     double rateSum(std::size_t n)
     {
         double sum = 0.0;
@@ -149,8 +149,9 @@ public:
         return sum;
     }
 
-    //- A proposal (j1, j2) for u uniform in [0, rateSum(n)); j1 == j2 is possible (and
-    //  rejected by the caller). `particles` lets the tree prefetch the candidates' records.
+    //- A proposal (j1, j2) for u uniform in [0, rateSum(n)), rateSum(n) called since the last
+    //  change; j1 == j2 is possible (and rejected by the caller). `particles` lets the store
+    //  prefetch the candidates' records.
 #if defined(__GNUC__)
     __attribute__((always_inline))  // once per event, from one place: as fast as written inline
 #endif
@@ -287,7 +288,7 @@ private:
     std::vector<double> phi_;
     std::vector<double> phi2_;
     std::vector<double> leaf_;          // one particle's tree columns
-    std::vector<double> columnTotals_;  // the bins' column totals as of rateSum()
+    std::vector<double> columnTotals_;  // the store's column totals as of rateSum()
     SumTree tree_;
     OctaveBins bins_;
     std::size_t binnedFrom_ = defaultBinnedFrom;
