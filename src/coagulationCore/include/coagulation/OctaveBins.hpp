@@ -13,9 +13,11 @@
 namespace coag {
 
 //- Multi-column weighted sampler for large populations: the values of each column binned by
-//  half-octave, with O(1) expected memory accesses per draw and per change (MajorantSampler
-//  uses it instead of the SumTree when a cell holds many particles: the tree's walk of
-//  log8 N dependent cache misses is what made the cost per event grow with N).
+//  half-octave, with O(1) expected memory accesses per draw and per change, against the
+//  SumTree's walk of log8 N levels (issue 19). MajorantSampler uses it for capacities from
+//  setBinnedFrom() on; off by default, as on the development machine it was not faster than
+//  the tree at N = 1e5 or 1e6 (a change first loads the leaf's positions, and the bin scans
+//  and totals cost more than the tree's cache-resident top levels; README, Performance).
 //
 //  Bin k of a column holds the values whose top 12 bits (the biased IEEE exponent E and the
 //  first significand bit h; k = 2E + h) are k: v in [1, 1.5) * 2^(E-1023) (h = 0) or
