@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 using namespace coag;
@@ -15,8 +16,8 @@ namespace {
 //  Khat(z1, z2) w2 / sum (weightedSecond, SWA) or Khat(z1, z2) / sum (DSA), and rateSum is that
 //  sum; checked for the additive (tree columns only) and the multiplicative-plus-constant
 //  shapes by a chi-square test over all 16 pairs (fixed seed, 15 degrees of freedom, 0.1 %
-//  critical value 37.7).
-void checkProposals(const CoagulationKernel& kernel, bool weightedSecond)
+//  critical value 37.7), with the columns in the sum tree and in the octave bins (binned).
+void checkProposals(const CoagulationKernel& kernel, bool weightedSecond, bool binned)
 {
     const std::vector<Particle> P{{ParticleType{1.0}, 1.0, 0},
                                   {ParticleType{2.0}, 0.5, 1},
@@ -25,6 +26,7 @@ void checkProposals(const CoagulationKernel& kernel, bool weightedSecond)
     const std::size_t n = P.size();
     MajorantSampler sampler(weightedSecond);
     sampler.configure(kernel, "test");
+    if (binned) sampler.setBinnedFrom(0);
     sampler.build(P, 8);
 
     std::vector<double> expected(n * n);
@@ -54,20 +56,44 @@ void checkProposals(const CoagulationKernel& kernel, bool weightedSecond)
         const double e = draws * expected[c] / sum;
         chi2 += (count[c] - e) * (count[c] - e) / e;
     }
-    EXPECT_LT(chi2, 37.7) << kernel.name() << (weightedSecond ? " weighted" : " unweighted");
+    EXPECT_LT(chi2, 37.7) << kernel.name() << (weightedSecond ? " weighted" : " unweighted")
+                          << (binned ? " binned" : " tree");
 }
 
 TEST(MajorantSampler, ProposesPairsByTheMajorant)
 {
-    for (bool weighted : {true, false}) {
-        checkProposals(*makeKernel("additive", 1.5), weighted);
-        checkProposals(*makeKernel("multiplicative", 0.5), weighted);
-        checkProposals(*makeKernel("constant", 2.0), weighted);
+    for (bool binned : {false, true}) {
+        for (bool weighted : {true, false}) {
+            checkProposals(*makeKernel("additive", 1.5), weighted, binned);
+            checkProposals(*makeKernel("multiplicative", 0.5), weighted, binned);
+            checkProposals(*makeKernel("constant", 2.0), weighted, binned);
+            checkProposals(*makeKernel("saffmanTurner", 0.5), weighted, binned);
+        }
     }
 }
 
+//- The store is chosen by the capacity at build()
+TEST(MajorantSampler, ChoosesTheBinsFromBinnedFrom)
+{
+    auto kernel = makeKernel("additive", 1.0);
+    const std::vector<Particle> P(10);
+    MajorantSampler sampler(true);
+    sampler.configure(*kernel, "test");
+    EXPECT_EQ(sampler.binnedFrom(), MajorantSampler::defaultBinnedFrom);
+    sampler.build(P, 100);
+    EXPECT_FALSE(sampler.binned());
+    sampler.setBinnedFrom(100);
+    sampler.build(P, 99);
+    EXPECT_FALSE(sampler.binned());
+    sampler.build(P, 100);
+    EXPECT_TRUE(sampler.binned());
+    EXPECT_GE(sampler.capacity(), 100u);
+}
+
 //- After a removal by swap and a change in place the sums follow the particles
-TEST(MajorantSampler, FollowsChangesAndRemovals)
+class MajorantSamplerStore : public ::testing::TestWithParam<bool> {};
+
+TEST_P(MajorantSamplerStore, FollowsChangesAndRemovals)
 {
     auto kernel = makeKernel("additive", 1.0);
     std::vector<Particle> P{{ParticleType{1.0}, 1.0, 0},
@@ -75,6 +101,7 @@ TEST(MajorantSampler, FollowsChangesAndRemovals)
                             {ParticleType{4.0}, 1.0, 2}};
     MajorantSampler sampler(true);
     sampler.configure(*kernel, "test");
+    if (GetParam()) sampler.setBinnedFrom(0);
     sampler.build(P, 3);
     auto direct = [&] {
         double s = 0.0;
@@ -94,5 +121,77 @@ TEST(MajorantSampler, FollowsChangesAndRemovals)
     sampler.append(P.back(), P.size() - 1);  // grows the tree past its capacity 3
     EXPECT_NEAR(sampler.rateSum(P.size()), direct(), 1e-12);
 }
+
+//- After many accepted-style changes (SWA's eq 21 on random pairs), appends and removals,
+//  the proposals still follow Khat w2: chi-square of the first and the second index
+//  against their exact marginals (0.1 % critical values).
+TEST_P(MajorantSamplerStore, ProposalsFollowAChangingPopulation)
+{
+    auto kernel = makeKernel("additive", 1.0);
+    std::vector<Particle> P;
+    for (int j = 0; j < 30; ++j) P.push_back(Particle{ParticleType{1.0 + j % 4}, 1.0, j});
+    MajorantSampler sampler(true);
+    sampler.configure(*kernel, "test");
+    if (GetParam()) sampler.setBinnedFrom(0);
+    sampler.build(P, P.size());
+    Rng rng(99);
+    for (int s = 0; s < 400; ++s) {
+        const std::size_t n = P.size();
+        const double r = rng.uniform();
+        if (r < 0.7) {
+            const std::size_t a = rng.uniformIndex(n), b = rng.uniformIndex(n);
+            if (a == b) continue;
+            const double m1 = P[a].type.mass, m2 = P[b].type.mass;
+            P[a].type.mass = m1 + m2;
+            P[a].weight *= m1 / (m1 + m2);
+            sampler.set(P[a], a);
+        } else if (r < 0.85) {
+            P.push_back(Particle{ParticleType{0.5 + rng.uniform()}, 3.0 * rng.uniform(), -1});
+            sampler.append(P.back(), P.size() - 1);
+        } else if (n > 10) {
+            const std::size_t k = rng.uniformIndex(n);
+            sampler.removeBySwap(k, n - 1);
+            P[k] = P[n - 1];
+            P.pop_back();
+        }
+    }
+    const std::size_t n = P.size();
+    std::vector<double> e1(n, 0.0), e2(n, 0.0);
+    double sum = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t k = 0; k < n; ++k) {
+            const double v = kernel->majorant(P[i].type, P[k].type) * P[k].weight;
+            e1[i] += v;
+            e2[k] += v;
+            sum += v;
+        }
+    }
+    ASSERT_NEAR(sampler.rateSum(n), sum, 1e-12 * sum);
+    const int draws = 400000;
+    std::vector<double> c1(n, 0.0), c2(n, 0.0);
+    for (int d = 0; d < draws; ++d) {
+        std::size_t j1 = 0, j2 = 0;
+        sampler.propose(rng.uniform() * sum, n, rng, P.data(), j1, j2);
+        ASSERT_LT(j1, n);
+        ASSERT_LT(j2, n);
+        c1[j1] += 1.0;
+        c2[j2] += 1.0;
+    }
+    double chi1 = 0.0, chi2 = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double a = draws * e1[i] / sum, b = draws * e2[i] / sum;
+        chi1 += (c1[i] - a) * (c1[i] - a) / a;
+        chi2 += (c2[i] - b) * (c2[i] - b) / b;
+    }
+    const double z = 3.09, k = static_cast<double>(n - 1);  // Wilson-Hilferty, 0.1 %
+    const double crit = k * std::pow(1.0 - 2.0 / (9.0 * k) + z * std::sqrt(2.0 / (9.0 * k)), 3);
+    EXPECT_LT(chi1, crit) << n << " particles";
+    EXPECT_LT(chi2, crit) << n << " particles";
+}
+
+INSTANTIATE_TEST_SUITE_P(Stores, MajorantSamplerStore, ::testing::Values(false, true),
+                         [](const ::testing::TestParamInfo<bool>& i) {
+                             return i.param ? std::string("bins") : std::string("tree");
+                         });
 
 } // namespace

@@ -91,3 +91,28 @@ TEST(SumTree, SamplesProportionallyAndNeverPicksEmptyLeaves)
         EXPECT_EQ(tree.sample(1, 0.0), 0u);
     }
 }
+
+//- samplePair walks two columns at once: the leaves of two sample() calls, bit for bit, in a
+//  cache-resident tree and in one big enough for the prefetching walk (> 512 kB)
+TEST(SumTree, SamplePairGivesTheLeavesOfTwoSamples)
+{
+    for (std::size_t n : {std::size_t(300), std::size_t(40000)}) {
+        SumTree tree;
+        tree.reset(3, n);
+        Rng rng(7);
+        for (std::size_t j = 0; j < n; ++j) {
+            for (std::size_t c = 0; c < 3; ++c) tree.set(j, c, j % 5 == c ? 0.0 : rng.uniform());
+        }
+        tree.rebuild();
+        std::vector<double> leafData(n);
+        for (int d = 0; d < 20000; ++d) {
+            const std::size_t c1 = d % 3, c2 = (d / 3) % 3;
+            const double u1 = rng.uniform() * tree.total(c1);
+            const double u2 = rng.uniform() * tree.total(c2);
+            std::size_t j1 = 0, j2 = 0;
+            tree.samplePair(c1, u1, c2, u2, leafData.data(), sizeof(double), j1, j2);
+            ASSERT_EQ(j1, tree.sample(c1, u1)) << n;
+            ASSERT_EQ(j2, tree.sample(c2, u2)) << n;
+        }
+    }
+}

@@ -67,6 +67,9 @@ void MajorantSampler::configure(const CoagulationKernel& kernel, const std::stri
     }
     nTerms_ = termCoeff_.size();
     termRate_.assign(nTerms_, 0.0);
+    leaf_.assign(nTreeColumns_, 0.0);
+    columnTotals_.assign(nTreeColumns_, 0.0);
+    binned_ = false;
 }
 
 } // namespace coag

@@ -17,7 +17,8 @@ core tests only: plant, `make coagulationCoreTests`, run
 `--gtest_filter='Lagrangian*:Trajectory*'`, revert); B100 in the functionals of the expectation
 (issue 17, the same way); B80-B89 in the Lagrangian model of issue 16
 (trajectories, estimators, effective source; core tests only,
-`--gtest_filter='LagrangianDiffusion*'`). B14-B17 now
+`--gtest_filter='LagrangianDiffusion*'`); B90-B96 in the pair proposals of the event loop
+(issue 19, core tests: the sum tree's pair walk, the octave bins, MajorantSampler). B14-B17 now
 sit in the coagulationPost package (the campaign measured them in the scripts it came from).
 
     bugs.py list                 id, file, targeted tests, what the bug is
@@ -60,6 +61,12 @@ TABLE = "src/coagulationCore/src/HomogeneousTable.cpp"
 LAGR = "src/coagulationCore/src/LagrangianCoagulation.cpp"
 LAGRH = "src/coagulationCore/include/coagulation/LagrangianCoagulation.hpp"
 LAGT = "core.Lagrangian|core.Trajectory"
+# The pair proposals of the event loop (issue 19), core only
+TREE = "src/coagulationCore/include/coagulation/SumTree.hpp"
+BINS = "src/coagulationCore/include/coagulation/OctaveBins.hpp"
+BINSCPP = "src/coagulationCore/src/OctaveBins.cpp"
+PROPOSE = "src/coagulationCore/include/coagulation/MajorantSampler.hpp"
+SAMPLERTESTS = "core.SumTree|core.OctaveBins|core.MajorantSampler|core.Stores/MajorantSamplerStore"
 
 # Every targeted run includes the fault and bad-input cases
 ALWAYS = "case_faults|case_badInput"
@@ -452,6 +459,41 @@ BUGS = {
             "        for (int i = 0; i < dim; ++i) x[i] += 0.5 * (v0[i] + v1[i]) * h;  // (8), Heun\n",
             "core.LagrangianDiffusion",
             "forward trajectory (8) with a velocity: the Heun step drops the Brownian increment"),
+    "B90": (TREE,
+            "                step<false>(l, c2, u2, n2, nullptr, 0);\n",
+            "                step<false>(l, c1, u2, n2, nullptr, 0);\n",
+            SAMPLERTESTS,
+            "tree pair walk (cache-resident tree): the second factor walks the first's column"),
+    "B91": (TREE,
+            "                step<true>(l, c2, u2, n2, leafData, leafBytes);\n",
+            "                step<true>(l, c1, u2, n2, leafData, leafBytes);\n",
+            SAMPLERTESTS,
+            "tree pair walk (prefetching, > 512 kB): the second factor walks the first's column"),
+    "B92": (PROPOSE,
+            "            const double u2 = rng.uniform() * columnTotals_[second.tree];\n",
+            "            const double u2 = rng.uniform() * columnTotals_[first.tree];\n",
+            SAMPLERTESTS,
+            "pair proposal: the second factor's uniform scaled by the first factor's total"),
+    "B93": (BINS,
+            "            if (low + cell <= v) return true;\n",
+            "            return true;\n",
+            SAMPLERTESTS,
+            "octave bins: no acceptance v / top (members of a bin drawn uniformly)"),
+    "B94": (BINS,
+            "        const std::uint64_t b = static_cast<std::uint64_t>(k + 1) << 51;\n",
+            "        const std::uint64_t b = static_cast<std::uint64_t>(k) << 51;\n",
+            SAMPLERTESTS,
+            "octave bins: the bin's top taken as its bottom (acceptance saturates at 1)"),
+    "B95": (BINS,
+            "        C.sum[kNew] += significand(v);\n",
+            "        C.sum[kNew] += significand(r.value);\n",
+            SAMPLERTESTS,
+            "octave bins: a change adds the old value's significand to the bin sum"),
+    "B96": (BINSCPP,
+            "        refresh(C, k);\n        if (r != last) {\n",
+            "        if (r != last) {\n",
+            SAMPLERTESTS,
+            "octave bins: a removal leaves its bin's total stale"),
 }
 
 

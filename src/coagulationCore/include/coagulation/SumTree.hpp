@@ -83,6 +83,29 @@ public:
                          : descend<false>(c, u, nullptr, 0);
     }
 
+    //- Two independent draws at once: j1 = sample(c1, u1, ...), j2 = sample(c2, u2, ...), the
+    //  same leaves, with the two walks interleaved level by level so that their cache misses
+    //  overlap instead of following each other (in a tree too big for the caches a walk is a
+    //  chain of dependent misses).
+    void samplePair(std::size_t c1, double u1, std::size_t c2, double u2, const void* leafData,
+                    std::size_t leafBytes, std::size_t& j1, std::size_t& j2) const
+    {
+        std::size_t n1 = 0, n2 = 0;
+        if (prefetch_) {
+            for (std::size_t l = levelOffset_.size(); l-- > 0;) {
+                step<true>(l, c1, u1, n1, leafData, leafBytes);
+                step<true>(l, c2, u2, n2, leafData, leafBytes);
+            }
+        } else {
+            for (std::size_t l = levelOffset_.size(); l-- > 0;) {
+                step<false>(l, c1, u1, n1, nullptr, 0);
+                step<false>(l, c2, u2, n2, nullptr, 0);
+            }
+        }
+        j1 = n1;
+        j2 = n2;
+    }
+
     //- Hint the cache about the lowest `depth` nodes on the path of leaf j.
     void prefetchPath(std::size_t j, std::size_t depth = 3) const
     {
@@ -111,49 +134,60 @@ private:
     template<bool PrefetchLeaves>
     std::size_t descend(std::size_t c, double u, const void* leafData, std::size_t leafBytes) const
     {
-        (void)leafData;
-        (void)leafBytes;
         std::size_t node = 0;
         for (std::size_t l = levelOffset_.size(); l-- > 0;) {
-#if defined(__GNUC__)
-            if (PrefetchLeaves && l == 0) {
-                // Addresses as integers: the last node's candidates may lie past the array
-                const std::uintptr_t first =
-                    reinterpret_cast<std::uintptr_t>(leafData) + node * fanOut * leafBytes;
-                for (std::size_t b = 0; b < fanOut * leafBytes; b += 64) {
-                    __builtin_prefetch(reinterpret_cast<const void*>(first + b));
-                }
-            }
-#endif
-            const double* v = base_ + levelOffset_[l] + node * blockSize_ + c * fanOut;
-#if defined(__GNUC__)
-            if (prefetch_ && l > 0 && l <= 3) {
-                const double* ch = base_ + levelOffset_[l - 1] + node * fanOut * blockSize_ + c * fanOut;
-                for (std::size_t k = 0; k < fanOut; ++k) __builtin_prefetch(ch + k * blockSize_);
-            }
-#endif
-            double p[fanOut + 1];
-            p[0] = 0.0;
-            p[1] = v[0];
-            p[2] = v[0] + v[1];
-            p[3] = p[2] + v[2];
-            p[4] = p[2] + (v[2] + v[3]);
-            p[5] = p[4] + v[4];
-            p[6] = p[4] + (v[4] + v[5]);
-            p[7] = p[6] + v[6];
-            p[8] = p[6] + (v[6] + v[7]);
-            std::size_t s = std::size_t(p[1] <= u) + std::size_t(p[2] <= u) + std::size_t(p[3] <= u)
-                            + std::size_t(p[4] <= u) + std::size_t(p[5] <= u)
-                            + std::size_t(p[6] <= u) + std::size_t(p[7] <= u)
-                            + std::size_t(p[8] <= u);
-            if (s == fanOut) {  // round-off: u >= node sum
-                s = fanOut - 1;
-                while (s > 0 && !(v[s] > 0.0)) --s;
-            }
-            u -= p[s];
-            node = node * fanOut + s;
+            step<PrefetchLeaves>(l, c, u, node, leafData, leafBytes);
         }
         return node;
+    }
+
+    //- One level of a descent: node on level l + 1 -> its child on level l, u reduced to it
+    template<bool PrefetchLeaves>
+#if defined(__GNUC__)
+    __attribute__((always_inline))
+#endif
+    void step(std::size_t l, std::size_t c, double& u, std::size_t& node, const void* leafData,
+              std::size_t leafBytes) const
+    {
+        (void)leafData;
+        (void)leafBytes;
+#if defined(__GNUC__)
+        if (PrefetchLeaves && l == 0) {
+            // Addresses as integers: the last node's candidates may lie past the array
+            const std::uintptr_t first =
+                reinterpret_cast<std::uintptr_t>(leafData) + node * fanOut * leafBytes;
+            for (std::size_t b = 0; b < fanOut * leafBytes; b += 64) {
+                __builtin_prefetch(reinterpret_cast<const void*>(first + b));
+            }
+        }
+#endif
+        const double* v = base_ + levelOffset_[l] + node * blockSize_ + c * fanOut;
+#if defined(__GNUC__)
+        if (prefetch_ && l > 0 && l <= 3) {
+            const double* ch = base_ + levelOffset_[l - 1] + node * fanOut * blockSize_ + c * fanOut;
+            for (std::size_t k = 0; k < fanOut; ++k) __builtin_prefetch(ch + k * blockSize_);
+        }
+#endif
+        double p[fanOut + 1];
+        p[0] = 0.0;
+        p[1] = v[0];
+        p[2] = v[0] + v[1];
+        p[3] = p[2] + v[2];
+        p[4] = p[2] + (v[2] + v[3]);
+        p[5] = p[4] + v[4];
+        p[6] = p[4] + (v[4] + v[5]);
+        p[7] = p[6] + v[6];
+        p[8] = p[6] + (v[6] + v[7]);
+        std::size_t s = std::size_t(p[1] <= u) + std::size_t(p[2] <= u) + std::size_t(p[3] <= u)
+                        + std::size_t(p[4] <= u) + std::size_t(p[5] <= u)
+                        + std::size_t(p[6] <= u) + std::size_t(p[7] <= u)
+                        + std::size_t(p[8] <= u);
+        if (s == fanOut) {  // round-off: u >= node sum
+            s = fanOut - 1;
+            while (s > 0 && !(v[s] > 0.0)) --s;
+        }
+        u -= p[s];
+        node = node * fanOut + s;
     }
 
     static double nodeSum(const double* v)
