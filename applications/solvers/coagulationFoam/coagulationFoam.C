@@ -98,7 +98,10 @@ int main(int argc, char *argv[])
         if (runTime.write())
         {
             cloud.onWrite();
-            timer.report(cloud.events(), cloud.transportStep().transfers());
+            timer.report
+            (
+                cloud.events(), cloud.transportStep().transfers(), mesh.nCells()
+            );
         }
     }
 
