@@ -40,3 +40,21 @@ checkBalance()
         || fail "particle balance error in $log"
     echo "mass balance error $err, particle balance exact"
 }
+
+# couetteWalkCase: in a copy of a tutorial (the current folder), the Couette channel of
+# case_channels with cellPoint velocity and a constant-D walk (rebound walls), n = 512,
+# t = 0..0.1, writes at 0.05 and 0.1 (case_threads, case_parallel)
+couetteWalkCase()
+{
+    rm -rf constant/polyMesh log.blockMesh
+    PYTHONPATH="$COAGULATIONFOAM_DIR/src/python${PYTHONPATH:+:$PYTHONPATH}" \
+        "$COAGULATIONFOAM_PYTHON" "$COAGULATIONFOAM_DIR/tests/cases/poiseuilleCase.py" setup . couette
+    runApplication blockMesh
+    setEntry . constant/coagulationProperties statisticalWeight/n 512
+    foamDictionary -entry transport -add "{ type frozenFlow; interpolationSchemes { U cellPoint; } }" \
+        constant/coagulationProperties > /dev/null
+    foamDictionary -entry dispersion -add "{ type constant; D 1e-6; }" constant/coagulationProperties > /dev/null
+    setEntry . system/controlDict deltaT 5e-4
+    setEntry . system/controlDict endTime 0.1
+    setEntry . system/controlDict writeInterval 0.05
+}

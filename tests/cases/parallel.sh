@@ -47,20 +47,10 @@ echo "PASS parallel run on 2 processors: balance closed, consistent with the ana
 # leaves: on 2 ranks both paths give the same particles and counts bit for bit. The Couette
 # channel of case_channels (cellPoint velocity, constant-D walk, rebound walls) decomposed
 # across the flow, so that the advection and the walk both cross the processor patch.
-export PYTHONPATH="$COAGULATIONFOAM_DIR/src/python${PYTHONPATH:+:$PYTHONPATH}"
 for path in array cloudMove; do
     d=$(newCase constantKernelDuct "parallel_couette_$path")
     cd "$d"
-    rm -rf constant/polyMesh log.blockMesh
-    "$COAGULATIONFOAM_PYTHON" "$COAGULATIONFOAM_DIR/tests/cases/poiseuilleCase.py" setup . couette
-    runApplication blockMesh
-    setEntry . constant/coagulationProperties statisticalWeight/n 512
-    foamDictionary -entry transport -add "{ type frozenFlow; interpolationSchemes { U cellPoint; } }" \
-        constant/coagulationProperties > /dev/null
-    foamDictionary -entry dispersion -add "{ type constant; D 1e-6; }" constant/coagulationProperties > /dev/null
-    setEntry . system/controlDict deltaT 5e-4
-    setEntry . system/controlDict endTime 0.1
-    setEntry . system/controlDict writeInterval 0.05
+    couetteWalkCase
     if [ "$path" = cloudMove ]; then
         foamDictionary -entry OptimisationSwitches -add "{ coagulationCloudMove 1; }" \
             system/controlDict > /dev/null

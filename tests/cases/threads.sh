@@ -80,21 +80,11 @@ out=$(grep "particles in/incepted/out" "$workDir/threads_inflow_2/log.coagulatio
 # Velocity interpolated to the particle and a random walk (issue 15): the Couette channel of
 # case_channels with cellPoint velocity and constant-D dispersion (rebound walls); the walk's
 # steps come from per-particle streams, so the threads and Cloud::move agree bit for bit too
-export PYTHONPATH="$COAGULATIONFOAM_DIR/src/python${PYTHONPATH:+:$PYTHONPATH}"
 for run in ref 1 2; do
     threads=${run/ref/1}
     d=$(newCase constantKernelDuct "threads_couette_$run")
     cd "$d"
-    rm -rf constant/polyMesh log.blockMesh
-    "$COAGULATIONFOAM_PYTHON" "$COAGULATIONFOAM_DIR/tests/cases/poiseuilleCase.py" setup . couette
-    runApplication blockMesh
-    setEntry . constant/coagulationProperties statisticalWeight/n 512
-    foamDictionary -entry transport -add "{ type frozenFlow; interpolationSchemes { U cellPoint; } }" \
-        constant/coagulationProperties > /dev/null
-    foamDictionary -entry dispersion -add "{ type constant; D 1e-6; }" constant/coagulationProperties > /dev/null
-    setEntry . system/controlDict deltaT 5e-4
-    setEntry . system/controlDict endTime 0.1
-    setEntry . system/controlDict writeInterval 0.05
+    couetteWalkCase
     if [ "$run" = ref ]; then
         foamDictionary -entry OptimisationSwitches -add "{ coagulationCloudMove 1; }" \
             system/controlDict > /dev/null

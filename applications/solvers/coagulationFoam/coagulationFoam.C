@@ -100,7 +100,8 @@ int main(int argc, char *argv[])
             cloud.onWrite();
             timer.report
             (
-                cloud.events(), cloud.transportStep().transfers(), mesh.nCells()
+                cloud.events(), cloud.transportStep().transfers(),
+                cloud.stepper().workSinceStart()
             );
         }
     }

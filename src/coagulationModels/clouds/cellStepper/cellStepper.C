@@ -58,6 +58,7 @@ void Foam::cellStepper::advanceCell
     const scalar inceptionRate = cloud_.inception().cellRate(celli);
     const bool incepts = inceptionRate > 0;
     outcome.particles = np;
+    outcome.stepped = np >= 2 || incepts;
 
     // Without inception a cell needs a pair to change
     if (np < 2 && !incepts)
@@ -187,6 +188,7 @@ void Foam::cellStepper::advance
     {
         const cellOutcome& outcome = outcomes_[celli];
         events += outcome.events;
+        workSum_ += work(celli);
 
         // Particles removed in the cell: DSA merges (including any
         // incepted and merged away within this step) and halvings
