@@ -18,7 +18,9 @@ core tests only: plant, `make coagulationCoreTests`, run
 (issue 17, the same way); B80-B89 in the Lagrangian model of issue 16
 (trajectories, estimators, effective source; core tests only,
 `--gtest_filter='LagrangianDiffusion*'`); B90-B96 in the pair proposals of the event loop
-(issue 19, core tests: the sum tree's pair walk, the octave bins, MajorantSampler). B14-B17 now
+(issue 19, core tests: the sum tree's pair walk, the octave bins, MajorantSampler); B101-B104
+in the decomposed array transport, the work weights, the restart check and the step count of a
+stopAt-nextWrite run (issue 19, case tests). B14-B17 now
 sit in the coagulationPost package (the campaign measured them in the scripts it came from).
 
     bugs.py list                 id, file, targeted tests, what the bug is
@@ -494,6 +496,26 @@ BUGS = {
             "        if (r != last) {\n",
             SAMPLERTESTS,
             "octave bins: a removal leaves its bin's total stale"),
+    "B101": (M + "submodels/transportModels/frozenFlow/frozenFlow.C",
+             "                if (fresh)\n",
+             "                if (!fresh && td.walk())\n                {\n                    p.dispersal() = walkStep(p, k, dt, walkStream);\n                }\n                if (fresh)\n",
+             "case_parallel",
+             "decomposed array transport: a particle handed over draws a new walk step instead of finishing its own"),
+    "B102": (M + "clouds/cellStepper/cellStepper.H",
+             "              + scalar(o.particles) + scalar(o.events.coagulations)\n",
+             "              + scalar(o.events.coagulations)\n",
+             "case_parallel",
+             "cellWork: the work leaves out the cell's particles"),
+    "B103": (M + "clouds/coagulationCloud/coagulationCloudChecks.C",
+             '    dict.add("nCells", global.nTotalCells());\n',
+             '    dict.add("nCells", mesh.nCells());\n',
+             "case_parallel",
+             "restart check: the processor's cell count, so a serial time cannot go on decomposed"),
+    "B104": (M + "cloudFunctions/momentSampler/momentSampler.C",
+             "        const scalar nSteps =\n            std::round((runTime.endTime().value() - runTime.value())/dt);\n",
+             "        const label nSteps =\n            std::round((runTime.endTime().value() - runTime.value())/dt);\n",
+             "case_badInput",
+             "moment sampler: the run's step count as a label (stopAt nextWrite: endTime GREAT overflows)"),
 }
 
 

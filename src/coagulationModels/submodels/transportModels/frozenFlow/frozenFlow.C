@@ -135,6 +135,8 @@ void Foam::transportModels::frozenFlow::moveOnThreads
     // step, then, round after round, those another processor handed over
     // (which go on from where they stopped)
     label first = 0;
+    label rounds = 0;
+    constexpr label maxExchangeRounds = 1000;
     for (bool fresh = true; ; fresh = false)
     {
         const label nParticles = index.particles().size();
@@ -230,6 +232,21 @@ void Foam::transportModels::frozenFlow::moveOnThreads
             break;
         }
         first = index.particles().size() - nReceived;
+
+        // A move always makes progress, so a particle crosses a processor
+        // patch a bounded number of times in a step; rounds without end mean
+        // particles handed back and forth: stop rather than hang (every
+        // processor takes the same rounds, so all stop here together)
+        if (++rounds > maxExchangeRounds)
+        {
+            FatalErrorInFunction
+                << "Particles still crossing processor patches after "
+                << maxExchangeRounds << " exchange rounds in one step ("
+                << returnReduce(nReceived, sumOp<label>())
+                << " handed over in the last round): a particle handed"
+                << " back and forth makes no progress" << nl
+                << exit(FatalError);
+        }
     }
 }
 
