@@ -16,6 +16,10 @@ import sys
 
 import numpy as np
 
+# The particle files' readers of the issue-16 column (same folder)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from coagulationDiffusionColumn import cell_of, field  # noqa: E402
+
 NX, HALF = int(os.environ.get("PUFF_NX", "48")), 12.0
 H = 2 * HALF / NX
 
@@ -47,19 +51,6 @@ sampling { tRelax 1e6; sampleInterval 0.02; }
 initialPopulation { numberDensity 1; mass 1; cellZone puff; }
 transport { type frozenFlow; interpolationSchemes { U cellPoint; } maxCo 0.3; }
 """ % n_per_cell)
-
-
-def cell_of(case, time):
-    """Each particle's cell, from the ASCII coordinates file: (a b c d) celli tetFace tetPt."""
-    text = open("%s/%s/lagrangian/coagulationCloud/coordinates" % (case, time)).read()
-    rows = [l for l in text.splitlines() if l.startswith("(") and l.count(")") == 1 and len(l) > 20]
-    return np.array([int(l.split(")")[1].split()[0]) for l in rows], dtype=int)
-
-
-def field(case, time, name):
-    text = open("%s/%s/lagrangian/coagulationCloud/%s" % (case, time, name)).read()
-    start = text.index("(", text.index("\n", text.rindex("}")))
-    return np.array(text[start + 1:text.rindex(")")].split(), dtype=float)
 
 
 def compare(case, ref, time):
