@@ -360,9 +360,13 @@ TEST_P(ReferenceKernelTest, SaffmanTurnerMatchesOdeReference)
     std::vector<std::array<double, 4>> ref;
     for (double t : times) ref.push_back(referenceMoments(kernel, 400, t, 1.0, source));
     auto exact = [&](double t) { return ref[t < 1.5 ? 0 : 1]; };
+    // 4000 particles, 16 realisations: the finite-N (Marcus-Lushnikov) bias of DSA in M2 and M3
+    // at t = 2 falls as 1/N, the standard error as 1/sqrt(N R). With 1000 particles and 32
+    // realisations DSA1/DSA2 sat 1.7 standard errors low on average over 30-40 seeds (SWA
+    // +0.3), so that a 4 SE test failed for some seeds; here the mean offset is 0.3-0.5 SE.
     const auto res = runEnsemble(
         GetParam(), kernel, inception, NumberControl{},
-        [&] { return monodisperse(1000, 1000.0); }, times, 300, 32);
+        [&] { return monodisperse(4000, 4000.0); }, times, 16, 32);
     expectMomentsMatch(res, times, exact, 4, GetParam() + " Saffman-Turner with source");
 }
 

@@ -219,60 +219,33 @@ TEST(NanbuPlantedBugs, TimeStepUsesTheWholeSizeRange)
 
 namespace {
 
-//- The inverse of std::mt19937_64's output tempering (so that a crafted state word gives a
-//  chosen raw output).
-std::uint64_t untemper(std::uint64_t y)
-{
-    auto undoRight = [](std::uint64_t v, unsigned s, std::uint64_t mask) {
-        std::uint64_t x = v;
-        for (unsigned i = 0; i < 64 / s + 1; ++i) x = v ^ ((x >> s) & mask);
-        return x;
-    };
-    auto undoLeft = [](std::uint64_t v, unsigned s, std::uint64_t mask) {
-        std::uint64_t x = v;
-        for (unsigned i = 0; i < 64 / s + 1; ++i) x = v ^ ((x << s) & mask);
-        return x;
-    };
-    y = undoRight(y, 43, ~std::uint64_t(0));
-    y = undoLeft(y, 37, 0xfff7eee000000000ULL);
-    y = undoLeft(y, 17, 0x71d67fffeda60000ULL);
-    y = undoRight(y, 29, 0x5555555555555555ULL);
-    return y;
-}
-
-//- An Rng whose next raw 64-bit output is `raw`: the std::mt19937_64 text state (the 312
-//  words, then the position; libstdc++'s layout) with the word at position 0 chosen.
+//- An Rng whose next raw 64-bit output is `raw`. xoshiro256++ outputs rotl(s0 + s3, 23) + s0:
+//  with s0 = 0 and s3 = rotr(raw, 23) that is raw (s1 = s2 = 1 keep the state non-zero).
 //  Asserts on a copy of the engine that the crafted state does give `raw`.
 Rng rngWithNextRawOutput(std::uint64_t raw)
 {
     Rng rng(1);
-    std::istringstream in(rng.state());
-    std::vector<std::uint64_t> words;
-    std::uint64_t v;
-    while (in >> v) words.push_back(v);
-    EXPECT_EQ(words.size(), std::mt19937_64::state_size + 1) << "unexpected state layout";
+    const std::uint64_t s3 = (raw >> 23) | (raw << 41);
     std::ostringstream out;
-    for (std::size_t i = 0; i < std::mt19937_64::state_size; ++i) {
-        out << (i == 0 ? untemper(raw) : words[i]) << ' ';
-    }
-    out << 0;  // position: the next output is word 0
+    out << "xoshiro256++ 0 1 1 " << s3;
     rng.setState(out.str());
-    std::mt19937_64 copy = rng.engine();
+    Rng::Engine copy = rng.engine();
     EXPECT_EQ(copy(), raw) << "crafted state does not give the raw output";
     return rng;
 }
 
 } // namespace
 
-TEST(RngPlantedBugs, UntemperInvertsTheTempering)
+TEST(RngPlantedBugs, CraftedStateGivesTheChosenOutput)
 {
-    // tempering of a known state word, checked against the engine itself
-    std::mt19937_64 e(7);
-    std::mt19937_64 copy = e;
-    const std::uint64_t out = copy();
-    Rng rng = rngWithNextRawOutput(out);
-    std::mt19937_64 crafted = rng.engine();
-    EXPECT_EQ(crafted(), out);
+    // an output of the engine itself, and the extremes
+    Rng::Engine e(7);
+    const std::uint64_t out = e();
+    for (const std::uint64_t raw : {out, std::uint64_t(0), ~std::uint64_t(0)}) {
+        Rng rng = rngWithNextRawOutput(raw);
+        Rng::Engine crafted = rng.engine();
+        EXPECT_EQ(crafted(), raw);
+    }
 }
 
 //- A raw output of 0 must not give uniform() == 0 (an infinite exponential waiting time).

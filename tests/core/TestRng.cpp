@@ -60,6 +60,35 @@ TEST(Rng, StateSaveRestoreReproducesTheSequence)
     EXPECT_THROW(other.setState("not a state"), std::invalid_argument);
 }
 
+//- Known answers: xoshiro256++ from the state {1, 2, 3, 4} (the first is rotl(1 + 4, 23) + 1 =
+//  5 * 2^23 + 1, the rest from an independent Python transcription of Blackman & Vigna's
+//  reference code), and the seeding's splitmix64 words for seed 0 (its published first value
+//  is 0xe220a8397b1dcdaf).
+TEST(Rng, EngineGivesTheReferenceSequence)
+{
+    Rng::Engine e(0);
+    ASSERT_TRUE(e.setWords({1, 2, 3, 4}));
+    EXPECT_EQ(e(), 41943041u);
+    EXPECT_EQ(e(), 58720359u);
+    EXPECT_EQ(e(), 3588806011781223u);
+    EXPECT_EQ(e(), 3591011842654386u);
+
+    const Rng::Engine seeded(0);
+    EXPECT_EQ(seeded.words()[0], 0xe220a8397b1dcdafULL);
+    EXPECT_EQ(seeded.words()[1], 7960286522194355700u);
+    EXPECT_EQ(seeded.words()[2], 487617019471545679u);
+    EXPECT_EQ(seeded.words()[3], 17909611376780542444u);
+    Rng::Engine copy = seeded;
+    EXPECT_EQ(copy(), 5987356902031041503u);
+    EXPECT_EQ(copy(), 7051070477665621255u);
+
+    EXPECT_FALSE(e.setWords({0, 0, 0, 0}));
+    Rng rng(3);
+    EXPECT_THROW(rng.setState("xoshiro256++ 0 0 0 0"), std::invalid_argument);
+    EXPECT_THROW(rng.setState("xoshiro256++ 1 2 3"), std::invalid_argument);
+    EXPECT_THROW(rng.setState("xoshiro256++ 1 2 3 4 5"), std::invalid_argument);
+}
+
 TEST(Rng, DifferentSeedsDiffer)
 {
     Rng a(1), b(2);

@@ -15,19 +15,22 @@ void Rng::throwZeroRange()
 std::string Rng::state() const
 {
     std::ostringstream os;
-    os << engine_;
+    os << "xoshiro256++";
+    for (const std::uint64_t w : engine_.words()) os << ' ' << w;
     return os.str();
 }
 
 void Rng::setState(const std::string& s)
 {
     std::istringstream is(s);
-    std::mt19937_64 e;
-    is >> e;
-    if (is.fail()) {
-        throw std::invalid_argument("coag::Rng::setState: text is not a std::mt19937_64 state");
+    std::string name;
+    std::array<std::uint64_t, 4> w{};
+    is >> name >> w[0] >> w[1] >> w[2] >> w[3];
+    std::string rest;
+    if (is.fail() || name != "xoshiro256++" || (is >> rest) || !engine_.setWords(w)) {
+        throw std::invalid_argument("coag::Rng::setState: text is not an xoshiro256++ state "
+                                    "(the name and four words, not all zero)");
     }
-    engine_ = e;
 }
 
 } // namespace coag
