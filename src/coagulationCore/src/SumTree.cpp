@@ -4,6 +4,11 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <new>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 namespace coag {
 
@@ -23,11 +28,19 @@ void SumTree::reset(std::size_t nColumns, std::size_t capacity)
         if (nodes == 1) break;
         nodes = (nodes + fanOut - 1) / fanOut;
     }
-    const std::size_t align = 64 / sizeof(double);
-    storage_.assign(offset + align, 0.0);
-    const std::uintptr_t addr = reinterpret_cast<std::uintptr_t>(storage_.data());
-    const std::size_t shift = ((64 - addr % 64) % 64) / sizeof(double);
-    base_ = storage_.data() + shift;
+    if (offset > storageDoubles_) {
+        const std::size_t bytes = offset * sizeof(double);
+        const std::size_t align = bytes >= hugePageBytes ? std::size_t(2) << 20 : 64;
+        const std::size_t rounded = (bytes + align - 1) / align * align;
+        storage_.reset(static_cast<double*>(std::aligned_alloc(align, rounded)));
+        if (!storage_) throw std::bad_alloc();
+        storageDoubles_ = rounded / sizeof(double);
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+        if (align > 64) madvise(storage_.get(), rounded, MADV_HUGEPAGE);  // a hint only
+#endif
+    }
+    base_ = storage_.get();
+    std::fill(base_, base_ + offset, 0.0);
     totals_.assign(ncol_, 0.0);
     prefetch_ = offset * sizeof(double) > prefetchBytes;
 }

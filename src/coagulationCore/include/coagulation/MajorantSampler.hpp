@@ -100,8 +100,9 @@ public:
             for (std::size_t c = 0; c < nTreeColumns_; ++c) bins_.set(j, c, leaf_[c]);
             return;
         }
-        fillLeaf(p, j);
-        updateLeaf(j);
+        if (nTreeColumns_ == 0) return;
+        basisColumns(p);
+        tree_.assign(j, leaf_.data());
     }
 
     //- Particle p appended at index j = n: grows the store (doubling) when full.
