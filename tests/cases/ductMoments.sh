@@ -24,6 +24,11 @@ runApplication coagulationFoam
 checkBalance log.coagulationFoam
 grep -q "Selecting cell algorithm $algorithm" log.coagulationFoam || fail "algorithm $algorithm not selected"
 
+# 47 cells x 4 moments at one tolerance: M3 near the inlet has a 95 % interval up to 6 % of
+# the mean (graded, n = 512), so a moment outside the tolerance must also be 4 standard errors
+# off to fail (a bias, not one stream's luck: cell 8's M3 came out +8.2 % at 2.6 standard
+# errors once the random engine changed)
 $report --case . --out results --no-plots --check --check-rel-tol "$relTol" --check-skip-cells 3 \
+    --check-sigma 4 \
     || fail "$algorithm moments off the analytic solution by more than $relTol"
 echo "PASS constant duct $algorithm $graded n=$n endTime=$endTime tol=$relTol"

@@ -40,6 +40,23 @@ def test_check_analytic(capsys):
         checks.check_analytic(res)
 
 
+def test_check_analytic_sigma(capsys):
+    # ci95 = 1 % of the value: standard error 0.51 %; 3.1 % off is 6.1 standard errors
+    res = report_result([[0.0, 0.031], [0.0, 0.0], [0.0, 0.0]])
+    assert not checks.check_analytic(res, rel_tol=0.03, sigma=4.0)
+    assert checks.check_analytic(res, rel_tol=0.03, sigma=6.5)
+    assert "check passed: 5 cell moments (cells 0..2, moments 0,1) within relative tolerance " \
+        "0.03 of the analytic cell averages; 1 more outside it but within 6.5 standard errors" \
+        in capsys.readouterr().out
+    res["ci"] = 0.1 * res["analytic"]                     # 3.1 % off, 0.6 standard errors
+    assert checks.check_analytic(res, rel_tol=0.03, sigma=4.0)
+    res["mean"][2, 0] = np.nan                            # not finite: fails whatever sigma
+    res["rel"][2, 0] = np.nan
+    assert not checks.check_analytic(res, rel_tol=0.03, sigma=4.0)
+    with pytest.raises(InputError, match="check-sigma must be > 0"):
+        checks.check_analytic(res, sigma=0.0)
+
+
 def test_check_values(capsys):
     res = report_result(np.zeros((3, 2)))
     assert checks.check_values(res, [(-1, 1, 30.0 * 1.0099, 0.01), (0, 0, 1.0, 0.0)])

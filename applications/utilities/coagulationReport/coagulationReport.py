@@ -94,6 +94,10 @@ def parse_args(argv):
                    help="compare every cell mean with the analytic cell average")
     g.add_argument("--check-rel-tol", type=float, default=0.03,
                    help="--check: largest allowed |mean - analytic|/analytic (default 0.03)")
+    g.add_argument("--check-sigma", type=float, default=None, metavar="Z",
+                   help="--check: a cell moment outside --check-rel-tol fails only if it is also "
+                        "more than Z standard errors (ci95/1.96) off (default: the tolerance "
+                        "alone)")
     g.add_argument("--check-skip-cells", type=int, default=0,
                    help="--check: ignore this many cells at the inlet (default 0)")
     g.add_argument("--check-moments", type=lambda s: [int(t) for t in s.split(",") if t.strip()],
@@ -218,7 +222,7 @@ def main(argv=None):
         ok = True
         if args.check:
             ok = checks.check_analytic(res, args.check_rel_tol, args.check_skip_cells,
-                                       args.check_moments, args.analytic)
+                                       args.check_moments, args.analytic, args.check_sigma)
         ok = checks.check_values(res, args.value_checks) and ok
         if args.psd is not None:
             ok = report_psd(args, out, res["meta"]["u"], written) and ok

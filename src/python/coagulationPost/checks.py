@@ -23,9 +23,14 @@ from .tables import se_of, table_cell
 
 # --------------------------------------------------------------------------- report
 
-def check_analytic(res, rel_tol=0.03, skip_cells=0, moments=None, analytic_option="auto"):
+def check_analytic(res, rel_tol=0.03, skip_cells=0, moments=None, analytic_option="auto",
+                   sigma=None):
     """Every cell from skip_cells on, each of `moments` (default: all with a
-    reference): |mean - analytic| / analytic <= rel_tol.  Returns True when all pass."""
+    reference): |mean - analytic| / analytic <= rel_tol.  With sigma, a cell moment
+    outside the tolerance fails only if it is also more than sigma standard errors off
+    (standard error ci95/1.96, the run's own interval): many cells and moments checked
+    at a fixed tolerance near the noise of the noisiest one (M3 near the inlet) fail for
+    some random streams, not for a bias.  Returns True when all pass."""
     nm = res["mean"].shape[1]
     ncell = len(res["x"])
     if res["meta"]["analytic"] is None:
@@ -36,12 +41,19 @@ def check_analytic(res, rel_tol=0.03, skip_cells=0, moments=None, analytic_optio
     for k in moments:
         if k < 0 or k >= min(nm, analytic.N_MOMENTS):
             raise InputError("--check-moments: no moment %d" % k)
-    nfail = ntested = 0
+    if sigma is not None and not sigma > 0:
+        raise InputError("--check-sigma must be > 0")
+    nfail = ntested = nsignificance = 0
     for i in range(skip_cells, ncell):
         for k in moments:
             ntested += 1
             m, a, r, c = res["mean"][i, k], res["analytic"][i, k], res["rel"][i, k], res["ci"][i, k]
-            if not (np.isfinite(r) and abs(r) <= rel_tol):
+            within = np.isfinite(r) and abs(r) <= rel_tol
+            if not within and sigma is not None and np.isfinite(m) and np.isfinite(c) \
+                    and abs(m - a) <= sigma * c / 1.96:
+                nsignificance += 1
+                continue
+            if not within:
                 nfail += 1
                 print("CHECK FAILED cell %d x=%.6g M%d: mean %.6e analytic %.6e rel.err %+.3f%% "
                       "(tol %.3g%%) ci95 %.3e" % (i, res["x"][i], k, m, a, 100 * r,
@@ -52,7 +64,9 @@ def check_analytic(res, rel_tol=0.03, skip_cells=0, moments=None, analytic_optio
         return False
     print("check passed: %d cell moments (cells %d..%d, moments %s) within relative "
           "tolerance %g of the analytic cell averages"
-          % (ntested, skip_cells, ncell - 1, ",".join(map(str, moments)), rel_tol))
+          % (ntested - nsignificance, skip_cells, ncell - 1, ",".join(map(str, moments)), rel_tol)
+          + ("; %d more outside it but within %g standard errors" % (nsignificance, sigma)
+             if nsignificance else ""))
     return True
 
 
