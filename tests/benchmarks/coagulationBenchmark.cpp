@@ -13,6 +13,7 @@
 // shows the fastest block (least disturbed by other load on the machine) and the median.
 //
 // Usage: coagulationBenchmark [minEventsPerCase (default 3e6)] [maxN (default 1e6)] [repeats (default 3)]
+//                             [algorithm (SWA, DSA1 or all)] [kernel (additive, constant or all)]
 #include "coagulation/coagulation.hpp"
 
 #include <algorithm>
@@ -136,6 +137,17 @@ int main(int argc, char** argv)
     const double minEvents = positiveArgument(argc, argv, 1, 3e6);
     const double maxN = positiveArgument(argc, argv, 2, 1e6);
     const int repeats = static_cast<int>(positiveArgument(argc, argv, 3, 3));
+    const std::string onlyAlg = argc > 4 ? argv[4] : "all";
+    const std::string onlyKernel = argc > 5 ? argv[5] : "all";
+    for (const auto& [given, allowed] :
+         {std::pair<std::string, std::vector<std::string>>{onlyAlg, {"SWA", "DSA1", "all"}},
+          {onlyKernel, {"additive", "constant", "all"}}}) {
+        if (std::find(allowed.begin(), allowed.end(), given) == allowed.end()) {
+            std::fprintf(stderr, "coagulationBenchmark: unknown algorithm or kernel '%s'\n",
+                         given.c_str());
+            return 1;
+        }
+    }
     std::printf("# coagulationBenchmark: one cell, K0 = 1, density 1, single thread\n");
     std::printf("# events = accepted + fictitious coagulation jumps; timing includes the tree build\n");
     std::printf("# best (and median) of %d blocks; bytes/ptcl = (particle vector + sum tree) / N\n",
@@ -144,7 +156,9 @@ int main(int argc, char** argv)
     std::printf("%-5s %-9s %9s %11s %10s %10s %9s %8s %8s %10s %8s\n", "alg", "kernel", "N", "events",
                 "Mevents/s", "(median)", "ns/event", "Macc/s", "ns/acc", "bytes/ptcl", "fict.");
     for (const std::string alg : {"SWA", "DSA1"}) {
+        if (onlyAlg != "all" && alg != onlyAlg) continue;
         for (const std::string kernel : {"additive", "constant"}) {
+            if (onlyKernel != "all" && kernel != onlyKernel) continue;
             for (double N : {1e3, 1e4, 1e5, 1e6}) {
                 if (N > maxN) continue;
                 const Summary r =

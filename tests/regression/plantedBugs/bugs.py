@@ -20,7 +20,8 @@ core tests only: plant, `make coagulationCoreTests`, run
 `--gtest_filter='LagrangianDiffusion*'`); B90-B96 in the pair proposals of the event loop
 (issue 19, core tests: the sum tree's pair walk, the octave bins, MajorantSampler); B101-B104
 in the decomposed array transport, the work weights, the restart check and the step count of a
-stopAt-nextWrite run (issue 19, case tests). B14-B17 now
+stopAt-nextWrite run (issue 19, case tests); B105-B107 in the random engine, the sum tree's
+one-pass assign and the report's --check-sigma (issue 19, core and python tests). B14-B17 now
 sit in the coagulationPost package (the campaign measured them in the scripts it came from).
 
     bugs.py list                 id, file, targeted tests, what the bug is
@@ -496,6 +497,21 @@ BUGS = {
             "        if (r != last) {\n",
             SAMPLERTESTS,
             "octave bins: a removal leaves its bin's total stale"),
+    "B105": ("src/coagulationCore/include/coagulation/Rng.hpp",
+             "        s_[3] = rotl(s_[3], 45);\n",
+             "        s_[3] = rotl(s_[3], 44);\n",
+             "core.Rng",
+             "xoshiro256++: the state's last rotation by 44 instead of 45"),
+    "B106": (TREE,
+             "        return ((a0 + a1) + (a2 + a3)) + ((a4 + a5) + (a6 + a7));\n",
+             "        return (((a0 + a1) + (a2 + a3)) + (a4 + a5)) + (a6 + a7);\n",
+             SAMPLERTESTS,
+             "sum tree assign(): the node sum associated differently from nodeSum (round-off drift)"),
+    "B107": (CHECKS,
+             "                    and abs(m - a) <= sigma * c / 1.96:\n",
+             "                    and abs(m - a) <= sigma * c:\n",
+             "python_unit",
+             "--check-sigma: the 95 % half-width taken as the standard error"),
     "B101": (M + "submodels/transportModels/frozenFlow/frozenFlow.C",
              "                if (fresh)\n",
              "                if (!fresh && td.walk())\n                {\n                    p.dispersal() = walkStep(p, k, dt, walkStream);\n                }\n                if (fresh)\n",
