@@ -10,6 +10,8 @@
 #   2x1simple    2 ranks x 1 thread, decomposePar simple (2 1 1): equal cell counts
 #   2x1work      2 ranks x 1 thread, hierarchical (2 1 1) with weightField coagulationWork
 #   2x1cloudMove 2x1work moving with Cloud::move (coagulationCloudMove 1), as before issue 19
+#   2x1cut       2 ranks x 1 thread, method manual from workDecomposition: the smallest
+#                largest share of coagulationWork (not in the default set)
 # in ROUNDS alternated rounds. Prints per run: wall s, transport and coagulation ms per step
 # (the slowest rank), moves/s per rank, work and wall balance (max/mean over ranks), particles
 # sent per step and kB received per step, and the particle count and mass at the end.
@@ -61,6 +63,7 @@ method $1;
 coeffs { n (2 1 1); }
 $2
 DICT
+    [ "${3:-}" = skip ] && return 0
     decomposePar -latestTime -force > log.decomposePar 2>&1 || { tail log.decomposePar; exit 1; }
 }
 
@@ -74,6 +77,13 @@ for r in $(seq 1 "$rounds"); do
         case "$config" in
             1x*) ;;
             2x1simple) setDecomposition simple "" ;;
+            2x1cut)
+                setDecomposition manual "workDecompositionCoeffs { n (2 1 1); }" skip
+                sed -i 's/^coeffs .*/coeffs { dataFile "cellDecomposition"; }/' system/decomposeParDict
+                workDecomposition -latestTime > log.workDecomposition 2>&1 \
+                    || { tail log.workDecomposition; exit 1; }
+                decomposePar -latestTime -force > log.decomposePar 2>&1 || { tail log.decomposePar; exit 1; }
+                ;;
             *) setDecomposition hierarchical "weightField coagulationWork;" ;;
         esac
         [ "$config" = 2x1cloudMove ] && \

@@ -21,7 +21,8 @@ core tests only: plant, `make coagulationCoreTests`, run
 (issue 19, core tests: the sum tree's pair walk, the octave bins, MajorantSampler); B101-B104
 in the decomposed array transport, the work weights, the restart check and the step count of a
 stopAt-nextWrite run (issue 19, case tests); B105-B107 in the random engine, the sum tree's
-one-pass assign and the report's --check-sigma (issue 19, core and python tests). B14-B17 now
+one-pass assign and the report's --check-sigma, B108-B109 in the linear partition of
+workDecomposition (issue 19, core, python and case tests). B14-B17 now
 sit in the coagulationPost package (the campaign measured them in the scripts it came from).
 
     bugs.py list                 id, file, targeted tests, what the bug is
@@ -512,6 +513,16 @@ BUGS = {
              "                    and abs(m - a) <= sigma * c:\n",
              "python_unit",
              "--check-sigma: the 95 % half-width taken as the standard error"),
+    "B108": ("src/coagulationCore/src/WorkPartition.cpp",
+             "        if (open && partsLeft > 1 && (sum + w[i] > hi || itemsLeft == partsLeft - 1)) {\n",
+             "        if (open && partsLeft > 1 && sum + w[i] > hi) {\n",
+             "core.WorkPartition|case_parallel",
+             "linear partition: parts may be left empty (no early close when the items only just fill the parts left)"),
+    "B109": ("src/coagulationCore/src/WorkPartition.cpp",
+             "            if (partsNeeded(w, mid) <= k) hi = mid;\n",
+             "            if (partsNeeded(w, mid) < k) hi = mid;\n",
+             "core.WorkPartition|case_parallel",
+             "linear partition: the bisection keeps a bottleneck that needs fewer parts than it may use"),
     "B101": (M + "submodels/transportModels/frozenFlow/frozenFlow.C",
              "                if (fresh)\n",
              "                if (!fresh && td.walk())\n                {\n                    p.dispersal() = walkStep(p, k, dt, walkStream);\n                }\n                if (fresh)\n",

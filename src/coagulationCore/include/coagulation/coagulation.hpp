@@ -23,5 +23,6 @@
 #include "coagulation/Rng.hpp"
 #include "coagulation/SumTree.hpp"
 #include "coagulation/SizeDistribution.hpp"
+#include "coagulation/WorkPartition.hpp"
 
 #endif

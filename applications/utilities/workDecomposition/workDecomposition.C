@@ -1,0 +1,266 @@
+// coagulationFoam. Copyright (C) 2025-2026 the coagulationFoam authors
+// SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
+//
+// workDecomposition: a decomposition for the `manual` method that balances the work per cell
+// (the field coagulationWork that the cellWork cloud function writes) with the smallest
+// largest share, where OpenFOAM's weighted simple/hierarchical split the cumulative weight
+// and leave a heavy cell that straddles a share with the rank it starts in (issue 19: the
+// additive duct's last three cells hold 58 % of its work; hierarchical left 59 % on one of
+// 2 ranks, this 52 %).
+//
+// Like hierarchical, the cells are cut into n.x slabs along x, each slab into n.y along y,
+// each of those into n.z along z (cells ordered by their centre, ties by cell index); every
+// cut is the exact linear partition of its cells' work (coag::partitionContiguous).
+//
+// system/decomposeParDict:
+//     numberOfSubdomains  2;
+//     method              manual;
+//     coeffs              { dataFile "cellDecomposition"; }   // written by this utility
+//     workDecompositionCoeffs
+//     {
+//         n       (2 1 1);             // slabs along x, y, z: product numberOfSubdomains
+//         field   coagulationWork;     // optional, the default
+//     }
+//
+// workDecomposition [-time T | -latestTime]  reads the field at that time (default: the
+// latest), writes constant/<dataFile> (the mesh's faces instance), prints the work per
+// processor and the balance (max/mean), beside that of the cumulative split for comparison.
+// Then: decomposePar [-latestTime].
+#include "fvCFD.H"
+#include "labelIOList.H"
+#include "timeSelector.H"
+
+#include "coagulation/WorkPartition.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <stdexcept>
+
+using namespace Foam;
+
+namespace
+{
+
+//- Reject keywords of dict outside valid (FatalIOError naming the file and entry)
+void checkKeywords(const dictionary& dict, const wordList& valid)
+{
+    for (const entry& e : dict)
+    {
+        if (!valid.found(e.keyword()))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Unknown keyword '" << e.keyword() << "' in " << dict.name()
+                << "; valid: " << valid << exit(FatalIOError);
+        }
+    }
+}
+
+//- Cut cells (in place, ordered) into parts along component dir, each part then along the
+//  later directions; assigns processors from firstProc on
+void cut
+(
+    labelList& cells,
+    const volVectorField::Internal& C,
+    const scalarField& w,
+    const Vector<label>& n,
+    const direction dir,
+    const label firstProc,
+    labelList& proc
+)
+{
+    if (dir == 3)
+    {
+        for (const label c : cells)
+        {
+            proc[c] = firstProc;
+        }
+        return;
+    }
+    std::stable_sort
+    (
+        cells.begin(),
+        cells.end(),
+        [&](const label a, const label b) { return C[a][dir] < C[b][dir]; }
+    );
+    std::vector<double> cw(cells.size());
+    forAll(cells, i)
+    {
+        cw[i] = w[cells[i]];
+    }
+    const label parts = n[dir];
+    std::vector<std::size_t> b;
+    try
+    {
+        b = coag::partitionContiguous(cw, std::size_t(parts));
+    }
+    catch (const std::invalid_argument& e)
+    {
+        FatalErrorInFunction
+            << e.what() << " (" << cells.size() << " cells cut into " << parts
+            << " along direction " << label(dir) << ")" << exit(FatalError);
+    }
+    label procsPerPart = 1;
+    for (direction d = dir + 1; d < 3; ++d)
+    {
+        procsPerPart *= n[d];
+    }
+    for (label p = 0; p < parts; ++p)
+    {
+        labelList sub(label(b[p + 1] - b[p]));
+        forAll(sub, i)
+        {
+            sub[i] = cells[label(b[p]) + i];
+        }
+        cut(sub, C, w, n, dir + 1, firstProc + p*procsPerPart, proc);
+    }
+}
+
+void report(const word& what, const labelList& proc, const scalarField& w, const label nProcs)
+{
+    scalarField work(nProcs, Zero);
+    labelList cells(nProcs, Zero);
+    forAll(proc, c)
+    {
+        work[proc[c]] += w[c];
+        ++cells[proc[c]];
+    }
+    Info<< what << ":" << nl;
+    forAll(work, p)
+    {
+        Info<< "    processor" << p << ": cells " << cells[p] << ", work " << work[p] << nl;
+    }
+    Info<< "    work balance (max/mean) = " << max(work)/(sum(work)/nProcs + VSMALL) << nl;
+}
+
+} // namespace
+
+
+int main(int argc, char* argv[])
+{
+    argList::addNote
+    (
+        "Write constant/<dataFile> for decomposePar's manual method: the cells cut into"
+        " n.x * n.y * n.z parts with the smallest largest share of the coagulationWork"
+        " field (system/decomposeParDict, workDecompositionCoeffs)"
+    );
+    argList::noParallel();
+    timeSelector::addOptions(true, false);
+    #include "setRootCase.H"
+    #include "createTime.H"
+    instantList times = timeSelector::selectIfPresent(runTime, args);
+    if (!args.found("time") && !args.found("latestTime"))
+    {
+        times = instantList(1, runTime.times().last());
+    }
+    runTime.setTime(times.last(), 0);
+    #include "createMesh.H"
+
+    IOdictionary decompDict
+    (
+        IOobject
+        (
+            "decomposeParDict",
+            runTime.system(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    );
+    const label nProcs = decompDict.get<label>("numberOfSubdomains");
+    const word method = decompDict.get<word>("method");
+    if (method != "manual")
+    {
+        FatalIOErrorInFunction(decompDict)
+            << "Entry 'method' in " << decompDict.name() << " is " << method
+            << "; workDecomposition writes the data of method manual" << exit(FatalIOError);
+    }
+    const dictionary& manualCoeffs =
+        decompDict.found("manualCoeffs")
+      ? decompDict.subDict("manualCoeffs")
+      : decompDict.subDict("coeffs");
+    const fileName dataFile = manualCoeffs.get<fileName>("dataFile");
+
+    const dictionary& coeffs = decompDict.subDict("workDecompositionCoeffs");
+    checkKeywords(coeffs, wordList({"n", "field"}));
+    const Vector<label> n = coeffs.get<Vector<label>>("n");
+    const word fieldName = coeffs.getOrDefault<word>("field", "coagulationWork");
+    if (cmptMin(n) < 1 || n.x()*n.y()*n.z() != nProcs)
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Entry 'n' " << n << " in " << coeffs.name()
+            << ": every component >= 1, product numberOfSubdomains = " << nProcs
+            << exit(FatalIOError);
+    }
+
+    volScalarField work
+    (
+        IOobject
+        (
+            fieldName,
+            runTime.timeName(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        ),
+        mesh
+    );
+    forAll(work, c)
+    {
+        if (!(work[c] >= 0) || !std::isfinite(work[c]))
+        {
+            FatalErrorInFunction
+                << "Field " << fieldName << " at time " << runTime.timeName()
+                << ": cell " << c << " has work " << work[c]
+                << " (must be finite and >= 0)" << exit(FatalError);
+        }
+    }
+    if (mesh.nCells() < nProcs)
+    {
+        FatalErrorInFunction
+            << mesh.nCells() << " cells for " << nProcs << " processors" << exit(FatalError);
+    }
+
+    labelList cells(identity(mesh.nCells()));
+    labelList proc(mesh.nCells(), -1);
+    cut(cells, mesh.C(), work.primitiveField(), n, 0, 0, proc);
+
+    // For comparison: the cumulative split along x of the weighted simple/hierarchical
+    // (only for a one-direction cut, n = (nProcs 1 1))
+    if (n.y() == 1 && n.z() == 1)
+    {
+        labelList order(identity(mesh.nCells()));
+        std::stable_sort
+        (
+            order.begin(),
+            order.end(),
+            [&](const label a, const label b) { return mesh.C()[a].x() < mesh.C()[b].x(); }
+        );
+        const scalar total = sum(work.primitiveField());
+        labelList cumulative(mesh.nCells());
+        scalar before = 0;
+        for (const label c : order)
+        {
+            cumulative[c] = min(label(nProcs*before/(total + VSMALL)), nProcs - 1);
+            before += work[c];
+        }
+        report("cumulative split (weighted simple/hierarchical)", cumulative, work, nProcs);
+    }
+    report("this decomposition", proc, work, nProcs);
+
+    labelIOList out
+    (
+        IOobject
+        (
+            dataFile,
+            mesh.facesInstance(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        proc
+    );
+    out.write();
+    Info<< "Wrote " << out.objectPath() << nl << "End" << nl;
+    return 0;
+}
