@@ -51,12 +51,13 @@ TEST(SumTree, ManyLeavesStayExactlyConsistent)
     EXPECT_EQ(tree.total(2), t2);
 }
 
-//- assign() (one pass, the new sums carried up in registers) leaves the tree that set() of each
-//  column then update() leaves, bit for bit, for every column count (1-4 have their own code,
-//  5 the generic path) and depth; and it stays exactly consistent with a rebuild.
-TEST(SumTree, AssignIsSetThenUpdate)
+//- assign() (one pass, the new sums carried up in registers; update() is assign() of the
+//  leaf's own values) leaves the tree that rebuild() makes from the same leaves, bit for bit,
+//  for every column count (1-4 have their own code, 5 and 16 the generic path) and depth:
+//  the totals after every change, and the leaf every u samples.
+TEST(SumTree, AssignIsSetThenRebuild)
 {
-    for (std::size_t ncol = 1; ncol <= 5; ++ncol) {
+    for (const std::size_t ncol : {1, 2, 3, 4, 5, 16}) {
         for (const std::size_t n : {std::size_t(5), std::size_t(700), std::size_t(40000)}) {
             SumTree a, b;
             a.reset(ncol, n);
@@ -72,30 +73,33 @@ TEST(SumTree, AssignIsSetThenUpdate)
             a.rebuild();
             b.rebuild();
             std::vector<double> values(ncol);
+            const int every = n > 1000 ? 97 : 1;  // a rebuild is O(n)
             for (int i = 0; i < 3000; ++i) {
                 const std::size_t j = rng.uniformIndex(n);
                 for (std::size_t c = 0; c < ncol; ++c) {
                     values[c] = i % 5 == 0 ? 0.0 : rng.exponential(1.0);
                     b.set(j, c, values[c]);
                 }
-                a.assign(j, values.data());
-                b.update(j);
+                if (i % 2 == 0) {
+                    a.assign(j, values.data());
+                } else {
+                    for (std::size_t c = 0; c < ncol; ++c) a.set(j, c, values[c]);
+                    a.update(j);
+                }
+                if (i % every != 0) continue;
+                b.rebuild();
                 for (std::size_t c = 0; c < ncol; ++c) {
                     ASSERT_EQ(a.total(c), b.total(c)) << ncol << " columns, " << n << " leaves";
+                    for (int k = 0; k < 20; ++k) {
+                        const double u = (k + 0.5) / 20.0 * a.total(c);
+                        ASSERT_EQ(a.sample(c, u), b.sample(c, u));
+                    }
                 }
             }
-            for (std::size_t c = 0; c < ncol; ++c) {
-                for (int k = 0; k < 200; ++k) {
-                    const double u = (k + 0.5) / 200.0 * a.total(c);
-                    ASSERT_EQ(a.sample(c, u), b.sample(c, u));
-                }
-            }
-            std::vector<double> totals(ncol);
-            for (std::size_t c = 0; c < ncol; ++c) totals[c] = a.total(c);
-            a.rebuild();
-            for (std::size_t c = 0; c < ncol; ++c) EXPECT_EQ(a.total(c), totals[c]);
         }
     }
+    SumTree t;
+    EXPECT_THROW(t.reset(SumTree::maxColumns + 1, 8), std::invalid_argument);
 }
 
 TEST(SumTree, SamplesProportionallyAndNeverPicksEmptyLeaves)

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace coag {
 
@@ -64,6 +65,12 @@ void MajorantSampler::configure(const CoagulationKernel& kernel, const std::stri
         termSecond_.push_back(columnFor(t.second, weightedSecond_, who));
         termFirstBasis_.push_back(static_cast<std::size_t>(t.first));
         termSecondBasis_.push_back(static_cast<std::size_t>(t.second));
+    }
+    if (nTreeColumns_ > SumTree::maxColumns) {
+        throw std::invalid_argument(who + ": kernel '" + kernel.name() + "' needs "
+                                    + std::to_string(nTreeColumns_)
+                                    + " sampler columns, at most "
+                                    + std::to_string(SumTree::maxColumns));
     }
     nTerms_ = termCoeff_.size();
     termRate_.assign(nTerms_, 0.0);

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cstdint>
 #include <new>
+#include <stdexcept>
+#include <string>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -14,6 +16,10 @@ namespace coag {
 
 void SumTree::reset(std::size_t nColumns, std::size_t capacity)
 {
+    if (nColumns > maxColumns) {
+        throw std::invalid_argument("coag::SumTree::reset: " + std::to_string(nColumns)
+                                    + " columns, at most " + std::to_string(maxColumns));
+    }
     ncol_ = nColumns;
     blockSize_ = ncol_ * fanOut;
     const std::size_t nodes0 = std::max<std::size_t>(1, (capacity + fanOut - 1) / fanOut);

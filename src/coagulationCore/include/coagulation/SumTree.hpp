@@ -52,26 +52,18 @@ public:
     //- Recompute the ancestors of leaf j (all columns): O(levels * columns).
     void update(std::size_t j)
     {
-        std::size_t idx = j;
-        const std::size_t nLevels = levelOffset_.size();
-        for (std::size_t l = 0; l + 1 < nLevels; ++l) {
-            const std::size_t node = idx >> 3;
-            const double* child = base_ + levelOffset_[l] + node * blockSize_;
-            double* parent = base_ + levelOffset_[l + 1] + (node >> 3) * blockSize_ + (node & 7);
-            for (std::size_t c = 0; c < ncol_; ++c) parent[c * fanOut] = nodeSum(child + c * fanOut);
-            idx = node;
-        }
-        const double* root = base_ + levelOffset_[nLevels - 1];
-        for (std::size_t c = 0; c < ncol_; ++c) totals_[c] = nodeSum(root + c * fanOut);
+        double v[maxColumns];
+        for (std::size_t c = 0; c < ncol_; ++c) v[c] = value(j, c);
+        assign(j, v);
     }
 
     //- Set every column of leaf j (values[c], c < columns()) and recompute its ancestors:
-    //  the same tree as set() of each column then update(j), bit for bit, in one pass.
-    //  Going up, each level's new sum is carried in a register and the old node is read
-    //  before its changed slot is written, so no load waits on a store of the level below
-    //  (update() re-reads the slot it just wrote, and a vectorised read of a line with a
-    //  pending narrower store cannot be forwarded); the loads of all levels depend on j
-    //  alone and are issued together, so their cache misses overlap.
+    //  the same tree as set() of each column then a recomputation of every ancestor from its
+    //  children by nodeSum(), bit for bit. Going up, each level's new sum is carried in a
+    //  register and the old node is read before its changed slot is written, so no load
+    //  waits on a store of the level below (a vectorised read of a line with a pending
+    //  narrower store cannot be forwarded); the loads of all levels depend on j alone and
+    //  are issued together, so their cache misses overlap.
     void assign(std::size_t j, const double* values)
     {
         switch (ncol_) {
@@ -79,11 +71,13 @@ public:
         case 2: assignColumns<2>(j, values); break;
         case 3: assignColumns<3>(j, values); break;
         case 4: assignColumns<4>(j, values); break;
-        default:
-            for (std::size_t c = 0; c < ncol_; ++c) set(j, c, values[c]);
-            update(j);
+        default: assignColumns<0>(j, values);
         }
     }
+
+    //- The most columns a tree holds (reset() refuses more): a kernel's majorant has a few
+    //  basis functions, each a column, and SWA weights the second factors (at most 2 per basis)
+    static constexpr std::size_t maxColumns = 16;
 
     //- Sum of column c over all leaves.
     double total(std::size_t c) const { return totals_[c]; }
@@ -228,17 +222,19 @@ private:
         return ((a0 + a1) + (a2 + a3)) + ((a4 + a5) + (a6 + a7));
     }
 
+    //- assign() for NC columns, or for ncol_ (<= maxColumns) when NC is 0
     template<std::size_t NC>
     void assignColumns(std::size_t j, const double* values)
     {
-        double cur[NC];
-        for (std::size_t c = 0; c < NC; ++c) cur[c] = values[c];
+        const std::size_t nc = NC > 0 ? NC : ncol_;
+        double cur[NC > 0 ? NC : maxColumns];
+        for (std::size_t c = 0; c < nc; ++c) cur[c] = values[c];
         std::size_t idx = j;
         const std::size_t nLevels = levelOffset_.size();
         for (std::size_t l = 0; l < nLevels; ++l) {
-            double* block = base_ + levelOffset_[l] + (idx >> 3) * (NC * fanOut);
+            double* block = base_ + levelOffset_[l] + (idx >> 3) * (nc * fanOut);
             const std::size_t slot = idx & 7;
-            for (std::size_t c = 0; c < NC; ++c) {
+            for (std::size_t c = 0; c < nc; ++c) {
                 double* v = block + c * fanOut;
                 const double sum = nodeSumWith(v, slot, cur[c]);
                 v[slot] = cur[c];
@@ -246,7 +242,7 @@ private:
             }
             idx >>= 3;
         }
-        for (std::size_t c = 0; c < NC; ++c) totals_[c] = cur[c];
+        for (std::size_t c = 0; c < nc; ++c) totals_[c] = cur[c];
     }
     std::size_t leafIndex(std::size_t j, std::size_t c) const
     {
