@@ -65,8 +65,8 @@ TEST(WorkPartition, OptimalAgainstBruteForce)
 }
 
 //- The duct of issue 19 (the work per cell of the additive duct at n = 8192, last 8 of 50
-//  cells as measured, the rest small): the cumulative split leaves 59 % on one rank, the
-//  optimal one 52 %.
+//  cells as measured with events counted at half a particle, the rest small): the cumulative
+//  split leaves 59 % on one rank, the optimal one 52 %.
 TEST(WorkPartition, HeavyCellsOfTheDuct)
 {
     std::vector<double> w(42, 4000.0);

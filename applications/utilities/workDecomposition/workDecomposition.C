@@ -4,9 +4,10 @@
 // workDecomposition: a decomposition for the `manual` method that balances the work per cell
 // (the field coagulationWork that the cellWork cloud function writes) with the smallest
 // largest share, where OpenFOAM's weighted simple/hierarchical split the cumulative weight
-// and leave a heavy cell that straddles a share with the rank it starts in (issue 19: the
-// additive duct's last three cells hold 58 % of its work; hierarchical left 59 % on one of
-// 2 ranks, this 52 %).
+// and leave a heavy cell that straddles a share with the rank it starts in (issue 19: on
+// the additive duct, with events counted at half a particle, the cumulative split left 59 %
+// of the work on one of 2 ranks, this 52 %; with the work count of cellWork both cut at the
+// same cell).
 //
 // Like hierarchical, the cells are cut into n.x slabs along x, each slab into n.y along y,
 // each of those into n.z along z (cells ordered by their centre, ties by cell index); every
@@ -24,9 +25,11 @@
 //
 // workDecomposition [-time T | -latestTime]  reads the field at that time (default: the
 // latest), writes constant/<dataFile> (the mesh's faces instance), prints the work per
-// processor and the balance (max/mean), beside that of the cumulative split for comparison.
+// processor and the balance (max/mean), beside that of OpenFOAM's weighted hierarchical
+// decomposition of the same field (its cumulative split) for comparison.
 // Then: decomposePar [-latestTime].
 #include "fvCFD.H"
+#include "decompositionMethod.H"
 #include "labelIOList.H"
 #include "timeSelector.H"
 
@@ -224,26 +227,22 @@ int main(int argc, char* argv[])
     labelList proc(mesh.nCells(), -1);
     cut(cells, mesh.C(), work.primitiveField(), n, 0, 0, proc);
 
-    // For comparison: the cumulative split along x of the weighted simple/hierarchical
-    // (only for a one-direction cut, n = (nProcs 1 1))
-    if (n.y() == 1 && n.z() == 1)
+    // For comparison: OpenFOAM's own weighted hierarchical decomposition of the same weights
     {
-        labelList order(identity(mesh.nCells()));
-        std::stable_sort
-        (
-            order.begin(),
-            order.end(),
-            [&](const label a, const label b) { return mesh.C()[a].x() < mesh.C()[b].x(); }
-        );
-        const scalar total = sum(work.primitiveField());
-        labelList cumulative(mesh.nCells());
-        scalar before = 0;
-        for (const label c : order)
-        {
-            cumulative[c] = min(label(nProcs*before/(total + VSMALL)), nProcs - 1);
-            before += work[c];
-        }
-        report("cumulative split (weighted simple/hierarchical)", cumulative, work, nProcs);
+        dictionary hierarchical;
+        hierarchical.add("numberOfSubdomains", nProcs);
+        hierarchical.add("method", word("hierarchical"));
+        dictionary hierarchicalCoeffs;
+        hierarchicalCoeffs.add("n", n);
+        hierarchicalCoeffs.add("order", word("xyz"));
+        hierarchical.add("coeffs", hierarchicalCoeffs);
+        const labelList cumulative =
+            decompositionMethod::New(hierarchical)->decompose
+            (
+                mesh.cellCentres(),
+                work.primitiveField()
+            );
+        report("hierarchical, weightField " + fieldName, cumulative, work, nProcs);
     }
     report("this decomposition", proc, work, nProcs);
 

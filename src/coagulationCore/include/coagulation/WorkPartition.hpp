@@ -14,9 +14,9 @@ namespace coag {
 //
 //  Why not the cumulative-weight split of OpenFOAM's simple/hierarchical decomposition: that
 //  one gives item i to part floor(k * (sum before i) / total), so a heavy item that straddles
-//  a part's share stays with the part it starts in. On the additive duct of issue 19 (50
-//  cells, the last three holding 13, 18 and 27 % of the work) it left 59 % on one of 2 ranks
-//  where 52 % was possible.
+//  a part's share stays with the part it starts in. On the additive duct of issue 19, with
+//  events counted at half a particle (the last three of 50 cells holding 12, 17 and 24 % of
+//  the work), it left 59 % on one of 2 ranks where 52 % was possible.
 //
 //  Method: the smallest bottleneck B for which the greedy pass (close a part when the next
 //  item would take it above B) needs at most k parts, by bisection between max(w) and
