@@ -28,7 +28,9 @@ def check_analytic(res, rel_tol=0.03, skip_cells=0, moments=None, analytic_optio
     """Every cell from skip_cells on, each of `moments` (default: all with a
     reference): |mean - analytic| / analytic <= rel_tol.  With sigma, a cell moment
     outside the tolerance fails only if it is also more than sigma standard errors off
-    (standard error ci95/1.96, the run's own interval): many cells and moments checked
+    (standard error ci95/1.96 from the run's own interval; its half-width carries the
+    Student t quantile, so with few degrees of freedom this is a little larger than the
+    standard error, 5 % at 25): many cells and moments checked
     at a fixed tolerance near the noise of the noisiest one (M3 near the inlet) fail for
     some random streams, not for a bias.  Returns True when all pass."""
     nm = res["mean"].shape[1]
