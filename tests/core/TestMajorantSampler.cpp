@@ -72,6 +72,37 @@ TEST(MajorantSampler, ProposesPairsByTheMajorant)
     }
 }
 
+//- pairRate() is the rate at which propose() offers the pair: summed over all ordered pairs
+//  it is rateSum(), also for values the tree's quantisation covers coarsely (masses over 25
+//  decades, so the smallest are one scale unit), and it majorises the target rate K (w2).
+//  So K (w2) / pairRate is the acceptance that makes the jump rates exact.
+TEST(MajorantSampler, PairRatesSumToTheRateSumAndMajoriseTheKernel)
+{
+    for (const char* name : {"additive", "multiplicative", "saffmanTurner", "constant"}) {
+        for (bool weighted : {true, false}) {
+            auto kernel = makeKernel(name, 1.5);
+            std::vector<Particle> P;
+            for (int j = 0; j < 40; ++j) {
+                P.push_back(Particle{ParticleType{std::pow(10.0, -25.0 + 25.0 * (j % 8) / 7.0)},
+                                     weighted ? std::pow(2.0, j % 5 - 2.0) : 1.0, j});
+            }
+            MajorantSampler sampler(weighted);
+            sampler.configure(*kernel, "test");
+            sampler.build(P, P.size());
+            const double rate = sampler.rateSum(P.size());
+            double sum = 0.0;
+            for (const Particle& a : P) {
+                for (const Particle& b : P) {
+                    const double pair = sampler.pairRate(a, b);
+                    sum += pair;
+                    ASSERT_GE(pair, sampler.targetRate((*kernel)(a.type, b.type), b)) << name;
+                }
+            }
+            EXPECT_NEAR(sum, rate, 1e-12 * rate) << name << (weighted ? " weighted" : "");
+        }
+    }
+}
+
 //- The store is chosen by the capacity at build()
 TEST(MajorantSampler, ChoosesTheBinsFromBinnedFrom)
 {

@@ -80,7 +80,7 @@ private:
     static void checkRate(double totalRate, double remaining, const CellPopulation& pop);
 
     //- The K/Khat acceptance of a proposed pair; a K above its majorant throws
-    bool accepted(const ParticleType& z1, const ParticleType& z2, const CoagulationKernel& kernel,
+    bool accepted(const Particle& p1, const Particle& p2, const CoagulationKernel& kernel,
                   Rng& rng);
 
     Jump jump_;
@@ -165,17 +165,21 @@ void JumpProcess<Jump>::checkRate(double totalRate, double remaining, const Cell
 }
 
 template <class Jump>
-bool JumpProcess<Jump>::accepted(const ParticleType& z1, const ParticleType& z2,
+bool JumpProcess<Jump>::accepted(const Particle& p1, const Particle& p2,
                                  const CoagulationKernel& kernel, Rng& rng)
 {
-    const double majorant = sampler_.majorant(z1, z2);
-    const double K = kernel(z1, z2);
-    if (K < majorant) return rng.uniform() * majorant < K;
-    if (K <= majorant * (1.0 + 1e-9)) return true;
+    // The pair was proposed at the sampler's rate (a majorant); its jump rate is K (w2):
+    // accepted with their ratio (thinning)
+    const double proposed = sampler_.pairRate(p1, p2);
+    const double K = kernel(p1.type, p2.type);
+    const double target = sampler_.targetRate(K, p2);
+    if (target < proposed) return rng.uniform() * proposed < target;
+    if (target <= proposed * (1.0 + 1e-9)) return true;
     std::ostringstream os;
     os << who() << ": kernel '" << kernel.name() << "' value " << K << " exceeds its majorant "
-       << majorant << " at masses " << z1.mass << ", " << z2.mass;
-    if (!std::isfinite(K) || !std::isfinite(majorant)) {
+       << kernel.majorant(p1.type, p2.type) << " at masses " << p1.type.mass << ", "
+       << p2.type.mass;
+    if (!std::isfinite(K) || !std::isfinite(proposed)) {
         os << " (non-finite values: has the system gelled?)";
         throw std::runtime_error(os.str());
     }
@@ -240,7 +244,7 @@ void JumpProcess<Jump>::advance(CellPopulation& pop, const CoagulationKernel& ke
         std::size_t j1 = 0;
         std::size_t j2 = 0;
         sampler_.propose((u - inceptionRate) / scale, n, rng, P.data(), j1, j2);
-        if (j1 == j2 || j1 >= n || j2 >= n || !accepted(P[j1].type, P[j2].type, kernel, rng)) {
+        if (j1 == j2 || j1 >= n || j2 >= n || !accepted(P[j1], P[j2], kernel, rng)) {
             ++stats.fictitious;
             continue;
         }

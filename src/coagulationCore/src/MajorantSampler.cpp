@@ -66,14 +66,15 @@ void MajorantSampler::configure(const CoagulationKernel& kernel, const std::stri
         termFirstBasis_.push_back(static_cast<std::size_t>(t.first));
         termSecondBasis_.push_back(static_cast<std::size_t>(t.second));
     }
-    if (nTreeColumns_ > SumTree::maxColumns) {
+    if (nTreeColumns_ > QuantizedSumTree::maxColumns) {
         throw std::invalid_argument(who + ": kernel '" + kernel.name() + "' needs "
                                     + std::to_string(nTreeColumns_)
                                     + " sampler columns, at most "
-                                    + std::to_string(SumTree::maxColumns));
+                                    + std::to_string(QuantizedSumTree::maxColumns));
     }
     nTerms_ = termCoeff_.size();
     termRate_.assign(nTerms_, 0.0);
+    lastTerm_ = nTerms_ - 1;
     leaf_.assign(nTreeColumns_, 0.0);
     columnTotals_.assign(nTreeColumns_, 0.0);
     binned_ = false;

@@ -20,9 +20,10 @@ core tests only: plant, `make coagulationCoreTests`, run
 `--gtest_filter='LagrangianDiffusion*'`); B90-B96 in the pair proposals of the event loop
 (issue 19, core tests: the sum tree's pair walk, the octave bins, MajorantSampler); B101-B104
 in the decomposed array transport, the work weights, the restart check and the step count of a
-stopAt-nextWrite run (issue 19, case tests); B105-B107 in the random engine, the sum tree's
-one-pass assign and the report's --check-sigma, B108-B109 in the linear partition of
-workDecomposition (issue 19, core, python and case tests). B14-B17 now
+stopAt-nextWrite run (issue 19, case tests); B105-B107 in the random engine, the (double) sum tree's
+one-pass assign (retired with that tree) and the report's --check-sigma, B108-B109 in the linear partition of
+workDecomposition (issue 19, core, python and case tests); B110-B115 in the quantised sum tree
+and the pair rate that accepts against it (issue 19, core tests). B14-B17 now
 sit in the coagulationPost package (the campaign measured them in the scripts it came from).
 
     bugs.py list                 id, file, targeted tests, what the bug is
@@ -66,11 +67,12 @@ LAGR = "src/coagulationCore/src/LagrangianCoagulation.cpp"
 LAGRH = "src/coagulationCore/include/coagulation/LagrangianCoagulation.hpp"
 LAGT = "core.Lagrangian|core.Trajectory"
 # The pair proposals of the event loop (issue 19), core only
-TREE = "src/coagulationCore/include/coagulation/SumTree.hpp"
+TREE = "src/coagulationCore/include/coagulation/QuantizedSumTree.hpp"
+TREECPP = "src/coagulationCore/src/QuantizedSumTree.cpp"
 BINS = "src/coagulationCore/include/coagulation/OctaveBins.hpp"
 BINSCPP = "src/coagulationCore/src/OctaveBins.cpp"
 PROPOSE = "src/coagulationCore/include/coagulation/MajorantSampler.hpp"
-SAMPLERTESTS = "core.SumTree|core.OctaveBins|core.MajorantSampler|core.Stores/MajorantSamplerStore"
+SAMPLERTESTS = "core.QuantizedSumTree|core.OctaveBins|core.MajorantSampler|core.Stores/MajorantSamplerStore"
 
 # Every targeted run includes the fault and bad-input cases
 ALWAYS = "case_faults|case_badInput"
@@ -474,8 +476,8 @@ BUGS = {
             SAMPLERTESTS,
             "tree pair walk (prefetching, > 512 kB): the second factor walks the first's column"),
     "B92": (PROPOSE,
-            "            const double u2 = rng.uniform() * columnTotals_[second.tree];\n",
-            "            const double u2 = rng.uniform() * columnTotals_[first.tree];\n",
+            "                const std::uint64_t u2 = rng.uniformIndex(tree_.totalInteger(second.tree));\n",
+            "                const std::uint64_t u2 = rng.uniformIndex(tree_.totalInteger(first.tree));\n",
             SAMPLERTESTS,
             "pair proposal: the second factor's uniform scaled by the first factor's total"),
     "B93": (BINS,
@@ -503,11 +505,38 @@ BUGS = {
              "        s_[3] = rotl(s_[3], 44);\n",
              "core.Rng",
              "xoshiro256++: the state's last rotation by 44 instead of 45"),
-    "B106": (TREE,
-             "        return ((a0 + a1) + (a2 + a3)) + ((a4 + a5) + (a6 + a7));\n",
-             "        return (((a0 + a1) + (a2 + a3)) + (a4 + a5)) + (a6 + a7);\n",
+    # B106 (the double sum tree's assign() association) went with that tree: the quantised
+    # tree's sums are exact integers, which B110-B115 plant against
+    "B110": (TREE,
+             "        const double t = std::ceil(v * scaleInverse_[c]);\n",
+             "        const double t = std::floor(v * scaleInverse_[c]);\n",
              SAMPLERTESTS,
-             "sum tree assign(): the node sum associated differently from nodeSum (round-off drift)"),
+             "quantised tree: a value rounded down to its scale, so Q may be below v (no majorant)"),
+    "B111": (TREECPP,
+             "    for (std::size_t c = 0; c < ncol_; ++c) delta[c] = 0 - leaf(from, c);\n    addToPath(from, delta);\n",
+             "",
+             SAMPLERTESTS,
+             "quantised tree: a removal by swap leaves the moved leaf also in its old slot"),
+    "B112": (TREECPP,
+             "            q[s] = k < 62 ? (q[s] + add) >> k : std::uint64_t(q[s] > 0);\n",
+             "            q[s] = k < 62 ? q[s] >> k : std::uint64_t(q[s] > 0);\n",
+             SAMPLERTESTS,
+             "quantised tree: coarsening rounds the leaves down (small values lost, Q below v)"),
+    "B113": (PROPOSE,
+             "        return binned_ ? value : tree_.quantised(col.tree, value);\n",
+             "        return value;\n",
+             SAMPLERTESTS,
+             "pair rate from the raw values, not the tree's quantised ones (acceptance too high for small values)"),
+    "B114": (TREE,
+             "        const std::size_t s = std::size_t(p1 <= u) + std::size_t(p2 <= u) + std::size_t(p3 <= u)\n",
+             "        const std::size_t s = std::size_t(p1 < u) + std::size_t(p2 <= u) + std::size_t(p3 <= u)\n",
+             SAMPLERTESTS,
+             "quantised tree descent: the first slot's boundary draw goes to the first slot"),
+    "B115": (TREE,
+             "            if (values[c] > 0.0 && (totals_[c] == 0 || values[c] > limitValue_[c])) {\n",
+             "            if (values[c] > 0.0 && values[c] > limitValue_[c]) {\n",
+             SAMPLERTESTS,
+             "quantised tree: an empty column keeps its old scale (values far below it over-covered)"),
     "B107": (CHECKS,
              "                    and abs(m - a) <= sigma * c / 1.96:\n",
              "                    and abs(m - a) <= sigma * c:\n",

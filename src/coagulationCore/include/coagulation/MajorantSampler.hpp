@@ -7,8 +7,9 @@
 #include "coagulation/OctaveBins.hpp"
 #include "coagulation/Particle.hpp"
 #include "coagulation/Rng.hpp"
-#include "coagulation/SumTree.hpp"
+#include "coagulation/QuantizedSumTree.hpp"
 
+#include <algorithm>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -77,8 +78,12 @@ public:
             return;
         }
         tree_.reset(nTreeColumns_, capacity);
-        for (std::size_t j = 0; j < n; ++j) fillLeaf(particles[j], j);
-        tree_.rebuild();
+        if (nTreeColumns_ == 0) return;
+        for (std::size_t j = 0; j < n; ++j) {
+            basisColumns(particles[j]);
+            for (std::size_t c = 0; c < nTreeColumns_; ++c) tree_.stage(j, c, leaf_[c]);
+        }
+        tree_.finishBuild(n);
     }
 
     std::size_t capacity() const { return binned_ ? bins_.capacity() : tree_.capacity(); }
@@ -124,12 +129,7 @@ public:
             bins_.removeBySwap(r, last);
             return;
         }
-        if (r != last) {
-            for (std::size_t c = 0; c < nTreeColumns_; ++c) tree_.set(r, c, tree_.value(last, c));
-            updateLeaf(r);
-        }
-        for (std::size_t c = 0; c < nTreeColumns_; ++c) tree_.set(last, c, 0.0);
-        updateLeaf(last);
+        if (nTreeColumns_ > 0) tree_.moveLeaf(last, r);
     }
 
     //- sum_t coeff_t S_first,t S_second,t over n >= 2 particles (0 for fewer); keeps the
@@ -141,10 +141,12 @@ public:
             for (std::size_t c = 0; c < nTreeColumns_; ++c) {
                 columnTotals_[c] = binned_ ? bins_.total(c) : tree_.total(c);
             }
+            lastTerm_ = 0;
             for (std::size_t k = 0; k < nTerms_; ++k) {
                 termRate_[k] = termCoeff_[k] * columnTotal(columns_[termFirst_[k]], n)
                                * columnTotal(columns_[termSecond_[k]], n);
                 sum += termRate_[k];
+                if (termRate_[k] > 0.0) lastTerm_ = k;
             }
         }
         return sum;
@@ -159,8 +161,8 @@ public:
     void propose(double u, std::size_t n, Rng& rng, const Particle* particles, std::size_t& j1,
                  std::size_t& j2) const
     {
-        std::size_t term = nTerms_ - 1;
-        for (std::size_t k = 0; k + 1 < nTerms_; ++k) {
+        std::size_t term = lastTerm_;  // u past the others' rates (round-off): the last positive
+        for (std::size_t k = 0; k < lastTerm_; ++k) {
             if (u < termRate_[k]) {
                 term = k;
                 break;
@@ -172,11 +174,13 @@ public:
         if (!first.uniform && !second.uniform) {
             // both from the store, the two walks' (candidates') loads overlapping; the
             // random numbers drawn in the same order as one after the other
-            const double u1 = rng.uniform() * columnTotals_[first.tree];
-            const double u2 = rng.uniform() * columnTotals_[second.tree];
             if (binned_) {
+                const double u1 = rng.uniform() * columnTotals_[first.tree];
+                const double u2 = rng.uniform() * columnTotals_[second.tree];
                 bins_.samplePair(first.tree, u1, second.tree, u2, rng, j1, j2);
             } else {
+                const std::uint64_t u1 = rng.uniformIndex(tree_.totalInteger(first.tree));
+                const std::uint64_t u2 = rng.uniformIndex(tree_.totalInteger(second.tree));
                 tree_.samplePair(first.tree, u1, second.tree, u2, particles, sizeof(Particle),
                                  j1, j2);
                 tree_.prefetchPath(j1);  // for the change of j1 that follows an acceptance
@@ -203,17 +207,29 @@ public:
 #endif
     }
 
-    //- Khat(z1, z2), from the basis at the two types (the values the tree holds, without
-    //  touching the tree's other columns).
-    double majorant(const ParticleType& z1, const ParticleType& z2)
+    //- The proposal rate of the pair (p1, p2) in the rateSum() units: sum_t coeff_t F_t(p1)
+    //  S_t(p2), F and S the store's values of the term's columns. In the tree these are the
+    //  quantised majorants QuantizedSumTree::quantised() of phi (* w), so the rate is
+    //  >= Khat(z1, z2) (* w2) >= K (* w2), and the target rate (K, times w2 when the second
+    //  factors are weighted: SWA) over it is the exact acceptance (thinning); in the bins and
+    //  for uniform columns phi (* w) itself, giving Khat(z1, z2) (* w2). Computed from the
+    //  particles, without touching the store; p1 and p2 must be in the store as they are now.
+    double pairRate(const Particle& p1, const Particle& p2)
     {
-        kernel_->basis(z1, phi_.data());
-        kernel_->basis(z2, phi2_.data());
+        kernel_->basis(p1.type, phi_.data());
+        kernel_->basis(p2.type, phi2_.data());
         double sum = 0.0;
         for (std::size_t k = 0; k < nTerms_; ++k) {
-            sum += termCoeff_[k] * phi_[termFirstBasis_[k]] * phi2_[termSecondBasis_[k]];
+            sum += termCoeff_[k] * columnValue(columns_[termFirst_[k]], phi_, p1.weight)
+                   * columnValue(columns_[termSecond_[k]], phi2_, p2.weight);
         }
         return sum;
+    }
+
+    //- The target rate of the pair in the same units: K(z1, z2), times w2 when weighted
+    double targetRate(double K, const Particle& p2) const
+    {
+        return weightedSecond_ ? K * p2.weight : K;
     }
 
     //- Bytes of the store (sum tree or bins) currently held
@@ -240,20 +256,14 @@ private:
         }
     }
 
-    void fillLeaf(const Particle& p, std::size_t j)
+    //- Column col's value for a particle with basis values phi and weight w, as the store
+    //  holds it (the same expression as basisColumns(), then the tree's quantisation)
+    double columnValue(const Column& col, const std::vector<double>& phi, double w) const
     {
-        if (nTreeColumns_ == 0) return;
-        kernel_->basis(p.type, phi_.data());
-        // Runs once per event: only the tree columns, in tree-column order
-        for (std::size_t c = 0; c < nTreeColumns_; ++c) {
-            const double v = phi_[treeBasis_[c]];
-            tree_.set(j, c, treeWeighted_[c] ? v * p.weight : v);
-        }
-    }
-
-    void updateLeaf(std::size_t j)
-    {
-        if (nTreeColumns_ > 0) tree_.update(j);
+        if (col.uniform) return col.constant;
+        const double v = phi[static_cast<std::size_t>(col.basis)];
+        const double value = col.weighted ? v * w : v;  // as basisColumns()
+        return binned_ ? value : tree_.quantised(col.tree, value);
     }
 
     double columnTotal(const Column& col, std::size_t n)
@@ -269,7 +279,7 @@ private:
         if (binned_) {
             return bins_.sample(col.tree, rng.uniform() * columnTotals_[col.tree], rng);
         }
-        return tree_.sample(col.tree, rng.uniform() * tree_.total(col.tree), particles,
+        return tree_.sample(col.tree, rng.uniformIndex(tree_.totalInteger(col.tree)), particles,
                             sizeof(Particle));
     }
 
@@ -288,9 +298,10 @@ private:
     std::vector<std::size_t> termSecondBasis_;
     std::vector<double> phi_;
     std::vector<double> phi2_;
+    std::size_t lastTerm_ = 0;       // rateSum(): the last term with a positive rate
     std::vector<double> leaf_;          // one particle's tree columns
     std::vector<double> columnTotals_;  // the store's column totals as of rateSum()
-    SumTree tree_;
+    QuantizedSumTree tree_;
     OctaveBins bins_;
     std::size_t binnedFrom_ = defaultBinnedFrom;
     bool binned_ = false;

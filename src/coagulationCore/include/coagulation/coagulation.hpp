@@ -21,7 +21,7 @@
 #include "coagulation/ParticleType.hpp"
 #include "coagulation/PseudoTurbulence.hpp"
 #include "coagulation/Rng.hpp"
-#include "coagulation/SumTree.hpp"
+#include "coagulation/QuantizedSumTree.hpp"
 #include "coagulation/SizeDistribution.hpp"
 #include "coagulation/WorkPartition.hpp"
 

@@ -1,0 +1,195 @@
+// coagulationFoam core. Copyright (C) 2025-2026 the coagulationFoam authors
+// SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
+#include "coagulation/QuantizedSumTree.hpp"
+
+#include <algorithm>
+#include <new>
+#include <stdexcept>
+#include <string>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
+namespace coag {
+
+void QuantizedSumTree::reset(std::size_t nColumns, std::size_t capacity)
+{
+    if (nColumns > maxColumns) {
+        throw std::invalid_argument("coag::QuantizedSumTree::reset: " + std::to_string(nColumns)
+                                    + " columns, at most " + std::to_string(maxColumns));
+    }
+    ncol_ = nColumns;
+    blockSize_ = ncol_ * fanOut;
+    const std::size_t nodes0 = std::max<std::size_t>(1, (capacity + fanOut - 1) / fanOut);
+    capacity_ = nodes0 * fanOut;
+    if (capacity_ > (std::size_t(1) << 40)) {
+        throw std::invalid_argument("coag::QuantizedSumTree::reset: capacity "
+                                    + std::to_string(capacity) + " above 2^40");
+    }
+    // total <= capacity * 2^bits_ <= 2^62
+    int logCapacity = 0;
+    while ((std::size_t(1) << logCapacity) < capacity_) ++logCapacity;
+    bits_ = std::min(52, 62 - logCapacity);
+
+    levelOffset_.clear();
+    levelNodes_.clear();
+    std::size_t offset = 0, nodes = nodes0;
+    for (;;) {
+        levelOffset_.push_back(offset);
+        levelNodes_.push_back(nodes);
+        offset += nodes * blockSize_;
+        if (nodes == 1) break;
+        nodes = (nodes + fanOut - 1) / fanOut;
+    }
+    if (offset > storageWords_) {
+        const std::size_t bytes = offset * sizeof(std::uint64_t);
+        const std::size_t align = bytes >= hugePageBytes ? std::size_t(2) << 20 : 64;
+        const std::size_t rounded = (bytes + align - 1) / align * align;
+        storage_.reset(static_cast<std::uint64_t*>(std::aligned_alloc(align, rounded)));
+        if (!storage_) throw std::bad_alloc();
+        storageWords_ = rounded / sizeof(std::uint64_t);
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+        if (align > 64) madvise(storage_.get(), rounded, MADV_HUGEPAGE);  // a hint only
+#endif
+    }
+    base_ = storage_.get();
+    std::fill(base_, base_ + offset, std::uint64_t(0));
+    totals_.assign(ncol_, 0);
+    exponent_.assign(ncol_, 0);
+    scale_.assign(ncol_, 1.0);
+    scaleInverse_.assign(ncol_, 1.0);
+    limitValue_.assign(ncol_, 0.0);
+    for (std::size_t c = 0; c < ncol_; ++c) setExponent(c, 0);
+    prefetch_ = offset * sizeof(std::uint64_t) > prefetchBytes;
+}
+
+int QuantizedSumTree::exponentFor(double largest) const
+{
+    if (!(largest > 0.0)) return 0;
+    int e2 = 0;
+    std::frexp(largest, &e2);  // largest < 2^e2
+    return e2 - (bits_ - headroomBits);
+}
+
+void QuantizedSumTree::setExponent(std::size_t c, int e)
+{
+    if (e < -960 || e > 960) {
+        throw std::domain_error("coag::QuantizedSumTree: a value of order 2^"
+                                + std::to_string(e + bits_ - headroomBits)
+                                + " is outside the sampler's range 2^-900 .. 2^1000");
+    }
+    exponent_[c] = e;
+    scale_[c] = std::ldexp(1.0, e);
+    scaleInverse_[c] = std::ldexp(1.0, -e);
+    limitValue_[c] = std::ldexp(1.0, bits_ + e);
+}
+
+void QuantizedSumTree::fitScale(std::size_t c, double v)
+{
+    const int e = exponentFor(v);
+    if (totals_[c] == 0) {
+        setExponent(c, e);  // every leaf is zero: any scale holds them
+    } else if (e > exponent_[c]) {
+        coarsen(c, e - exponent_[c]);
+    }
+}
+
+void QuantizedSumTree::coarsen(std::size_t c, int k)
+{
+    // ceil(q / 2^k) = ceil(v 2^-(e+k)) for q = ceil(v 2^-e): the quantisation at the new scale
+    // (q <= 2^52: no overflow below k = 62; from there every positive q becomes 1)
+    const std::uint64_t add = k < 62 ? (std::uint64_t(1) << k) - 1 : 0;
+    std::uint64_t* leaves = base_ + c * fanOut;
+    for (std::size_t node = 0; node < levelNodes_[0]; ++node) {
+        std::uint64_t* q = leaves + node * blockSize_;
+        for (std::size_t s = 0; s < fanOut; ++s) {
+            q[s] = k < 62 ? (q[s] + add) >> k : std::uint64_t(q[s] > 0);
+        }
+    }
+    setExponent(c, exponent_[c] + k);
+    rebuild();
+}
+
+void QuantizedSumTree::finishBuild(std::size_t n)
+{
+    for (std::size_t c = 0; c < ncol_; ++c) {
+        double largest = 0.0;
+        for (std::size_t j = 0; j < n; ++j) {
+            double v;
+            std::memcpy(&v, &base_[leafIndex(j, c)], sizeof v);
+            largest = std::max(largest, v);
+        }
+        setExponent(c, exponentFor(largest));
+        for (std::size_t j = 0; j < n; ++j) {
+            double v;
+            std::memcpy(&v, &base_[leafIndex(j, c)], sizeof v);
+            base_[leafIndex(j, c)] = quantise(c, v);
+        }
+    }
+    rebuild();
+}
+
+void QuantizedSumTree::rebuild()
+{
+    const std::size_t nLevels = levelOffset_.size();
+    for (std::size_t l = 0; l + 1 < nLevels; ++l) {
+        const std::uint64_t* child = base_ + levelOffset_[l];
+        std::uint64_t* parent = base_ + levelOffset_[l + 1];
+        std::fill(parent, parent + levelNodes_[l + 1] * blockSize_, std::uint64_t(0));
+        for (std::size_t node = 0; node < levelNodes_[l]; ++node) {
+            std::uint64_t* p = parent + (node >> 3) * blockSize_ + (node & 7);
+            const std::uint64_t* ch = child + node * blockSize_;
+            for (std::size_t c = 0; c < ncol_; ++c) {
+                const std::uint64_t* v = ch + c * fanOut;
+                p[c * fanOut] = v[0] + v[1] + v[2] + v[3] + v[4] + v[5] + v[6] + v[7];
+            }
+        }
+    }
+    const std::uint64_t* root = base_ + levelOffset_[nLevels - 1];
+    for (std::size_t c = 0; c < ncol_; ++c) {
+        const std::uint64_t* v = root + c * fanOut;
+        totals_[c] = v[0] + v[1] + v[2] + v[3] + v[4] + v[5] + v[6] + v[7];
+    }
+}
+
+void QuantizedSumTree::addToPath(std::size_t j, const std::uint64_t* delta)
+{
+    std::size_t idx = j;
+    for (std::size_t l = 0; l < levelOffset_.size(); ++l) {
+        std::uint64_t* block = base_ + levelOffset_[l] + (idx >> 3) * blockSize_ + (idx & 7);
+        for (std::size_t c = 0; c < ncol_; ++c) block[c * fanOut] += delta[c];
+        idx >>= 3;
+    }
+    for (std::size_t c = 0; c < ncol_; ++c) totals_[c] += delta[c];
+}
+
+void QuantizedSumTree::moveLeaf(std::size_t from, std::size_t to)
+{
+    // the same integers at the same scale, moved as exact deltas (modulo 2^64) without
+    // requantising
+    std::uint64_t delta[maxColumns];
+    if (from != to) {
+        for (std::size_t c = 0; c < ncol_; ++c) delta[c] = leaf(from, c) - leaf(to, c);
+        addToPath(to, delta);
+    }
+    for (std::size_t c = 0; c < ncol_; ++c) delta[c] = 0 - leaf(from, c);
+    addToPath(from, delta);
+}
+
+void QuantizedSumTree::resizeCapacity(std::size_t capacity)
+{
+    QuantizedSumTree t;
+    t.reset(ncol_, capacity);
+    for (std::size_t c = 0; c < ncol_; ++c) t.setExponent(c, exponent_[c]);
+    const std::size_t keepNodes = std::min(capacity_, t.capacity_) / fanOut;
+    std::copy(base_, base_ + keepNodes * blockSize_, t.base_);
+    t.rebuild();
+    // a larger capacity leaves a leaf fewer bits: coarsen the columns whose leaves no longer fit
+    for (std::size_t c = 0; c < ncol_; ++c) {
+        if (t.bits_ < bits_) t.coarsen(c, bits_ - t.bits_);
+    }
+    *this = std::move(t);
+}
+
+} // namespace coag

@@ -1,0 +1,172 @@
+// SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
+#include "TestHelpers.hpp"
+
+#include <numeric>
+
+using namespace coagtest;
+
+namespace {
+
+//- Every leaf majorises its value within one scale unit (v <= Q < v + 2^e, Q = 2^e for any
+//  0 < v <= 2^e), is the tree's quantisation of it, and the totals are the integer sums of the
+//  leaves (the sums rebuild() makes from them)
+void expectQuantisationOf(QuantizedSumTree& tree, const std::vector<std::vector<double>>& v,
+                          const std::string& what)
+{
+    for (std::size_t c = 0; c < tree.columns(); ++c) {
+        const double unit = std::ldexp(1.0, tree.exponent(c));
+        std::uint64_t sum = 0;
+        for (std::size_t j = 0; j < v[c].size(); ++j) {
+            const double Q = tree.value(j, c);
+            ASSERT_GE(Q, v[c][j]) << what << ": column " << c << " leaf " << j;
+            ASSERT_LT(Q - unit, v[c][j]) << what << ": column " << c << " leaf " << j;  // exact
+            ASSERT_EQ(Q, tree.quantised(c, v[c][j])) << what;
+            if (v[c][j] > 0.0) {
+                ASSERT_GT(tree.leaf(j, c), 0u) << what;
+            }
+            sum += tree.leaf(j, c);
+        }
+        for (std::size_t j = v[c].size(); j < tree.capacity(); ++j) ASSERT_EQ(tree.leaf(j, c), 0u);
+        ASSERT_EQ(tree.totalInteger(c), sum) << what << ": column " << c;
+    }
+    std::vector<std::uint64_t> totals(tree.columns());
+    for (std::size_t c = 0; c < tree.columns(); ++c) totals[c] = tree.totalInteger(c);
+    tree.rebuild();
+    for (std::size_t c = 0; c < tree.columns(); ++c) ASSERT_EQ(tree.totalInteger(c), totals[c]);
+}
+
+} // namespace
+
+TEST(QuantizedSumTree, BuildQuantisesEachColumnBelowItsLargestValue)
+{
+    QuantizedSumTree tree;
+    tree.reset(2, 5);
+    EXPECT_GE(tree.capacity(), 5u);
+    std::vector<std::vector<double>> v{{1.0, 0.25, 3.0, 0.0, 1e-30}, {1e12, 2e12, 0.5e12, 7e11, 0.0}};
+    for (std::size_t j = 0; j < 5; ++j) {
+        for (std::size_t c = 0; c < 2; ++c) tree.stage(j, c, v[c][j]);
+    }
+    tree.finishBuild(5);
+    expectQuantisationOf(tree, v, "build");
+    // the largest value headroomBits below the leaf limit: q = 3 * 2^-e < 2^(52 - 8)
+    EXPECT_LE(tree.leaf(2, 0), std::uint64_t(1) << 44);
+    EXPECT_GT(tree.leaf(2, 0), std::uint64_t(1) << 43);
+    EXPECT_EQ(tree.leaf(4, 0), 1u);  // far below the scale: one unit
+    // small integers and powers of two stay exact: the totals are the sums
+    EXPECT_EQ(tree.total(0), 4.25 + tree.value(4, 0));
+    EXPECT_EQ(tree.total(1), 4.2e12);
+}
+
+//- assign() and moveLeaf() add exact deltas: after many random changes, with values over
+//  30 decades, zeros, growth that coarsens a column and capacity changes, every leaf is the
+//  quantisation of its value and the totals are the sums of the leaves
+TEST(QuantizedSumTree, ChangesKeepTheLeavesAndSumsExact)
+{
+    for (const std::size_t ncol : {1, 2, 3, 4, 5, 16}) {
+        for (const std::size_t n : {std::size_t(7), std::size_t(600), std::size_t(5000)}) {
+            const std::string what = std::to_string(ncol) + " columns, " + std::to_string(n);
+            QuantizedSumTree tree;
+            tree.reset(ncol, n);
+            Rng rng(3 + n + ncol);
+            std::vector<std::vector<double>> v(ncol, std::vector<double>(n));
+            for (std::size_t j = 0; j < n; ++j) {
+                for (std::size_t c = 0; c < ncol; ++c) {
+                    v[c][j] = j % 11 == c ? 0.0 : std::pow(10.0, 10.0 * rng.uniform());
+                    tree.stage(j, c, v[c][j]);
+                }
+            }
+            tree.finishBuild(n);
+            expectQuantisationOf(tree, v, what + " build");
+            std::vector<double> x(ncol);
+            std::size_t size = n;
+            for (int i = 0; i < 4000; ++i) {
+                const std::size_t j = rng.uniformIndex(size);
+                if (i % 97 == 5 && size > 1) {  // removal by swap
+                    tree.moveLeaf(size - 1, j);
+                    for (std::size_t c = 0; c < ncol; ++c) {
+                        v[c][j] = v[c][size - 1];
+                        v[c].pop_back();
+                    }
+                    --size;
+                    continue;
+                }
+                for (std::size_t c = 0; c < ncol; ++c) {
+                    // mostly moderate changes, sometimes zero, rarely 20 decades of growth
+                    const double r = rng.uniform();
+                    x[c] = r < 0.1 ? 0.0 : r > 0.998 ? 1e20 * v[c][j] + 1.0
+                                         : v[c][j] * (0.5 + rng.uniform()) + 1e-20;
+                    v[c][j] = x[c];
+                }
+                tree.assign(j, x.data());
+                if (i % 500 == 0) expectQuantisationOf(tree, v, what + " step");
+            }
+            expectQuantisationOf(tree, v, what + " end");
+            tree.resizeCapacity(4 * n + 100);
+            expectQuantisationOf(tree, v, what + " resized");
+        }
+    }
+    QuantizedSumTree t;
+    EXPECT_THROW(t.reset(QuantizedSumTree::maxColumns + 1, 8), std::invalid_argument);
+}
+
+//- The descent is exact: leaf j is chosen for exactly the q_j draws u in
+//  [prefix_j, prefix_j + q_j), so the law is q_j / total and a leaf with q = 0 is never chosen.
+//  Checked at both ends of every leaf's range, for trees of 1 to 4 levels, with and without
+//  the prefetching walk (> 512 kB); samplePair gives the leaves of two sample() calls.
+TEST(QuantizedSumTree, EachLeafOwnsExactlyItsRangeOfDraws)
+{
+    for (const std::size_t n : {std::size_t(6), std::size_t(70), std::size_t(700),
+                                std::size_t(30000)}) {
+        QuantizedSumTree tree;
+        tree.reset(3, n);
+        Rng rng(8 + n);
+        for (std::size_t j = 0; j < n; ++j) {
+            for (std::size_t c = 0; c < 3; ++c) {
+                tree.stage(j, c, (j + c) % 3 == 1 ? 0.0 : rng.exponential(1.0));
+            }
+        }
+        tree.finishBuild(n);
+        std::vector<double> leafData(tree.capacity());
+        for (std::size_t c = 0; c < 3; ++c) {
+            std::uint64_t prefix = 0;
+            for (std::size_t j = 0; j < tree.capacity(); ++j) {
+                const std::uint64_t q = tree.leaf(j, c);
+                if (q > 0) {
+                    ASSERT_EQ(tree.sample(c, prefix), j) << n;
+                    ASSERT_EQ(tree.sample(c, prefix + q - 1, leafData.data(), sizeof(double)), j);
+                    std::size_t j1 = 0, j2 = 0;
+                    const std::uint64_t u2 = rng.uniformIndex(tree.totalInteger(2 - c));
+                    tree.samplePair(c, prefix + q - 1, 2 - c, u2, leafData.data(),
+                                    sizeof(double), j1, j2);
+                    ASSERT_EQ(j1, j);
+                    ASSERT_EQ(j2, tree.sample(2 - c, u2));
+                }
+                prefix += q;
+            }
+            ASSERT_EQ(prefix, tree.totalInteger(c));
+        }
+    }
+}
+
+//- A column whose leaves are all zero takes its scale from the next value, whatever the
+//  scale before; values beyond the scales' range are refused
+TEST(QuantizedSumTree, EmptyColumnTakesItsScaleAfresh)
+{
+    QuantizedSumTree tree;
+    tree.reset(1, 16);
+    tree.finishBuild(0);
+    const double tiny = 3e-200, large = 5e200;
+    tree.assign(3, &tiny);
+    EXPECT_GT(tree.leaf(3, 0), std::uint64_t(1) << 40);
+    EXPECT_GE(tree.value(3, 0), tiny);
+    const double zero = 0.0;
+    tree.assign(3, &zero);
+    EXPECT_EQ(tree.totalInteger(0), 0u);
+    tree.assign(5, &large);
+    EXPECT_GT(tree.leaf(5, 0), std::uint64_t(1) << 40);
+    EXPECT_GE(tree.value(5, 0), large);
+    EXPECT_LT(tree.value(5, 0), large * (1 + 1e-12));
+    const double unreachable = 1e-300;
+    tree.assign(5, &zero);
+    EXPECT_THROW(tree.assign(2, &unreachable), std::domain_error);
+}
