@@ -12,6 +12,8 @@
 #   2x1cloudMove 2x1work moving with Cloud::move (coagulationCloudMove 1), as before issue 19
 #   2x1cut       2 ranks x 1 thread, method manual from workDecomposition: the smallest
 #                largest share of coagulationWork (not in the default set)
+#   2x1runs      2x1cut with runsPerPart 3: up to 6 runs of cells dealt to the 2 ranks
+#                (not in the default set)
 # in ROUNDS alternated rounds. Prints per run: wall s, transport and coagulation ms per step
 # (the slowest rank), moves/s per rank, work and wall balance (max/mean over ranks), particles
 # sent per step and kB received per step, and the particle count and mass at the end.
@@ -19,6 +21,7 @@
 #   CASE=additiveDuct ...       the additive-kernel duct tutorial instead (deltaT 4e-4; the
 #                               issue's n = 8192: ... 2 250 250 8192)
 #   CONFIGS="1x1 2x1work" ...   a subset of the configurations
+#   EVENTCOST=0.53 ...          cellWork's eventCost for the weights (default 1)
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 . "$here/../../etc/functions"
@@ -48,7 +51,8 @@ foamDictionary -entry endTime -set "$t0" system/controlDict > /dev/null
 # two writes: the weights written at the second average over its half of the start
 foamDictionary -entry writeInterval -set "$(awk -v s="$warm" -v d="$dt" 'BEGIN { print s * d / 2 }')" system/controlDict > /dev/null
 foamDictionary -entry statisticalWeight/n -set "$n" constant/coagulationProperties > /dev/null
-foamDictionary -entry cloudFunctions -add "{ work { type cellWork; } }" constant/coagulationProperties > /dev/null
+foamDictionary -entry cloudFunctions -add "{ work { type cellWork; ${EVENTCOST:+eventCost $EVENTCOST;} } }" \
+    constant/coagulationProperties > /dev/null
 OMP_NUM_THREADS=2 coagulationFoam > log.warm 2>&1 || { tail log.warm; exit 1; }
 foamDictionary -entry endTime -set "$t1" system/controlDict > /dev/null
 # writeInterval counts from the start time
@@ -77,8 +81,9 @@ for r in $(seq 1 "$rounds"); do
         case "$config" in
             1x*) ;;
             2x1simple) setDecomposition simple "" ;;
-            2x1cut)
-                setDecomposition manual "workDecompositionCoeffs { n (2 1 1); }" skip
+            2x1cut|2x1runs)
+                runs=1; [ "$config" = 2x1runs ] && runs=3
+                setDecomposition manual "workDecompositionCoeffs { n (2 1 1); runsPerPart $runs; }" skip
                 sed -i 's/^coeffs .*/coeffs { dataFile "cellDecomposition"; }/' system/decomposeParDict
                 workDecomposition -latestTime > log.workDecomposition 2>&1 \
                     || { tail log.workDecomposition; exit 1; }

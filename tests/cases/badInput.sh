@@ -106,6 +106,7 @@ expectFatal psdTopTypo         "cloudFunction"    -entry cloudFunction -set "{ p
 expectFatal hugeSampleInterval "sampleInterval"   -entry sampling/sampleInterval -set 1e30
 expectFatal psdHugeCorrelation "correlationTime"  -entry cloudFunctions -set "{ psd1 { $psdOk correlationTime 1e300; } }"
 expectFatal cellWorkTypo       "field"            -entry cloudFunctions -set "{ work { type cellWork; field w; } }"
+expectFatal cellWorkEventCost  "eventCost"        -entry cloudFunctions -set "{ work { type cellWork; eventCost -1; } }"
 file=system/controlDict
 expectFatal endTimeBelowStep   "endTime"          -entry endTime -set 4e-5
 expectFatal courantAboveOne    "deltaT"           -entry deltaT -set 0.01

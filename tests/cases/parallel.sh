@@ -139,3 +139,23 @@ foamDictionary -entry workDecompositionCoeffs/nn -add 2 system/decomposeParDict 
 workDecomposition -latestTime > log.bad 2>&1 && fail "workDecomposition took an unknown keyword"
 grep -q "Unknown keyword 'nn'" log.bad || fail "workDecomposition: no error naming the keyword"
 echo "PASS workDecomposition: cells $cells work balance $optimal (weighted hierarchical $hierarchical)"
+
+# runsPerPart 3: up to 6 runs of cells dealt to the 2 ranks, never above the cut's balance,
+# every cell on a rank (decomposePar's counts add up); runsPerPart 0 is refused by name
+foamDictionary -entry workDecompositionCoeffs/nn -remove system/decomposeParDict > /dev/null
+foamDictionary -entry workDecompositionCoeffs/runsPerPart -add 3 system/decomposeParDict > /dev/null
+workDecomposition -latestTime > log.workDecomposition.runs 2>&1 \
+    || { tail log.workDecomposition.runs; fail "workDecomposition with runsPerPart 3 failed"; }
+dealt=$(grep "work balance" log.workDecomposition.runs | tail -1 | awk '{print $NF}')
+awk -v r="$dealt" -v o="$optimal" 'BEGIN { exit !(r > 0 && r <= o * (1 + 1e-12)) }' \
+    || fail "workDecomposition runsPerPart 3: balance $dealt above the cut's $optimal"
+decomposePar -latestTime -force > log.decomposePar.runs 2>&1 \
+    || { tail log.decomposePar.runs; fail "decomposePar refused the dealt runs"; }
+total=$(grep "Number of cells = " log.decomposePar.runs | awk '{s += $NF} END {print s}')
+meshCells=$(grep "^    processor" log.workDecomposition.runs | head -2 | awk '{gsub(",", "", $3); s += $3} END {print s}')
+[ "$total" = "$meshCells" ] && [ "$total" -gt 0 ] \
+    || fail "decomposePar after runsPerPart 3: $total cells on the ranks, $meshCells in the mesh"
+foamDictionary -entry workDecompositionCoeffs/runsPerPart -set 0 system/decomposeParDict > /dev/null
+workDecomposition -latestTime > log.bad 2>&1 && fail "workDecomposition took runsPerPart 0"
+grep -q "Entry 'runsPerPart' 0" log.bad || fail "workDecomposition: no error naming runsPerPart"
+echo "PASS workDecomposition runsPerPart 3: balance $dealt (cut $optimal), $(grep 'processor boundary faces' log.workDecomposition.runs | tail -1 | awk '{print $NF}') processor boundary faces"

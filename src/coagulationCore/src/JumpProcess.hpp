@@ -79,7 +79,8 @@ private:
     //- A finite rate, and not more than maxExpectedEvents in the rest of the step
     static void checkRate(double totalRate, double remaining, const CellPopulation& pop);
 
-    //- The K/Khat acceptance of a proposed pair; a K above its majorant throws
+    //- The acceptance of a proposed pair: K (w2) over its proposal rate (MajorantSampler::
+    //  pairRate, Khat (w2) from the tree's integer majorants); a K above its majorant throws
     bool accepted(const Particle& p1, const Particle& p2, const CoagulationKernel& kernel,
                   Rng& rng);
 
@@ -239,7 +240,8 @@ void JumpProcess<Jump>::advance(CellPopulation& pop, const CoagulationKernel& ke
             continue;
         }
 
-        // ---- coagulation: a pair from the majorant, accepted with probability K/Khat
+        // ---- coagulation: a pair from the majorant, accepted with probability K/Khat (K w2 over
+        //      the pair's proposal rate, from the tree's quantised Khat w2)
         //      (j1 == j2 and rejections are fictitious jumps)
         std::size_t j1 = 0;
         std::size_t j2 = 0;

@@ -92,4 +92,57 @@ double largestPart(const std::vector<double>& w, const std::vector<std::size_t>&
     return largest;
 }
 
+std::vector<std::size_t> partitionRuns(const std::vector<double>& w, std::size_t k,
+                                       std::size_t maxRuns)
+{
+    if (maxRuns == 0) {
+        throw std::invalid_argument("coag::partitionRuns: at most 0 runs per part");
+    }
+    const std::size_t n = w.size();
+    std::vector<std::size_t> best;
+    double bestLargest = 0.0;
+    for (std::size_t m = 1; m <= maxRuns && (m == 1 || m * k <= n); ++m) {
+        const std::vector<std::size_t> b = partitionContiguous(w, m * k);
+        const std::size_t runs = b.size() - 1;
+        std::vector<double> runSum(runs, 0.0);
+        for (std::size_t r = 0; r < runs; ++r) {
+            for (std::size_t i = b[r]; i < b[r + 1]; ++i) runSum[r] += w[i];
+        }
+        // LPT: the runs largest first (earlier first on ties) to the least loaded part
+        std::vector<std::size_t> order(runs);
+        for (std::size_t r = 0; r < runs; ++r) order[r] = r;
+        std::stable_sort(order.begin(), order.end(),
+                         [&](std::size_t a, std::size_t c) { return runSum[a] > runSum[c]; });
+        std::vector<double> load(k, 0.0);
+        std::vector<std::size_t> count(k, 0);
+        std::vector<std::size_t> part(n, 0);
+        for (const std::size_t r : order) {
+            std::size_t p = r;  // one run per part: the cut, its parts in order
+            if (m > 1) {
+                p = 0;
+                for (std::size_t q = 1; q < k; ++q) {
+                    if (load[q] < load[p] || (load[q] == load[p] && count[q] < count[p])) p = q;
+                }
+            }
+            load[p] += runSum[r];
+            ++count[p];
+            for (std::size_t i = b[r]; i < b[r + 1]; ++i) part[i] = p;
+        }
+        const double largest = *std::max_element(load.begin(), load.end());
+        if (best.empty() || largest < bestLargest) {
+            best = std::move(part);
+            bestLargest = largest;
+        }
+    }
+    return best;
+}
+
+double largestShare(const std::vector<double>& w, const std::vector<std::size_t>& part,
+                    std::size_t k)
+{
+    std::vector<double> load(k, 0.0);
+    for (std::size_t i = 0; i < w.size(); ++i) load.at(part.at(i)) += w[i];
+    return k == 0 ? 0.0 : *std::max_element(load.begin(), load.end());
+}
+
 } // namespace coag

@@ -23,7 +23,8 @@ in the decomposed array transport, the work weights, the restart check and the s
 stopAt-nextWrite run (issue 19, case tests); B105-B107 in the random engine, the (double) sum tree's
 one-pass assign (retired with that tree) and the report's --check-sigma, B108-B109 in the linear partition of
 workDecomposition (issue 19, core, python and case tests); B110-B115 in the quantised sum tree
-and the pair rate that accepts against it (issue 19, core tests). B14-B17 now
+and the pair rate that accepts against it (issue 19, core tests); B116-B118 in the dealt runs
+of workDecomposition's runsPerPart (issue 19, core and case tests). B14-B17 now
 sit in the coagulationPost package (the campaign measured them in the scripts it came from).
 
     bugs.py list                 id, file, targeted tests, what the bug is
@@ -552,6 +553,21 @@ BUGS = {
              "            if (partsNeeded(w, mid) < k) hi = mid;\n",
              "core.WorkPartition|case_parallel",
              "linear partition: the bisection keeps a bottleneck that needs fewer parts than it may use"),
+    "B116": ("src/coagulationCore/src/WorkPartition.cpp",
+             "                    if (load[q] < load[p] || (load[q] == load[p] && count[q] < count[p])) p = q;\n",
+             "                    if (load[q] < load[p]) p = q;\n",
+             "core.WorkPartition|case_parallel",
+             "dealt runs: ties in load not broken by the run count (zero-work runs pile onto part 0, another part empty)"),
+    "B117": ("src/coagulationCore/src/WorkPartition.cpp",
+             "        if (best.empty() || largest < bestLargest) {\n",
+             "        if (best.empty() || m > 1) {\n",
+             "core.WorkPartition|case_parallel",
+             "dealt runs: the most runs kept whether or not they balance better than fewer"),
+    "B118": ("applications/utilities/workDecomposition/workDecomposition.C",
+             "            if (label(part[i]) == p)\n",
+             "            if (label(part[i]) <= p)\n",
+             "case_parallel",
+             "workDecomposition: a part's cells taken with every earlier part's (the last part overwrites them)"),
     "B101": (M + "submodels/transportModels/frozenFlow/frozenFlow.C",
              "                if (fresh)\n",
              "                if (!fresh && td.walk())\n                {\n                    p.dispersal() = walkStep(p, k, dt, walkStream);\n                }\n                if (fresh)\n",

@@ -35,7 +35,8 @@ namespace coag {
 //
 //  The jump process is simulated exactly (JumpProcess.hpp: Gillespie waiting times over
 //  [0, dt], the total rate recomputed after every event) with pair proposals from the
-//  kernel's product-form majorant (MajorantSampler.hpp) accepted with probability K/Khat.
+//  kernel's product-form majorant (MajorantSampler.hpp) accepted with probability K/Khat
+//  (Khat as the sampler's tree holds it: integer majorants of its factors).
 //  Number control (NumberControl.hpp) halves or doubles the population. Cost per event
 //  O(#terms + log N); the sampler is built once per advance() call (O(N)); no allocation per
 //  event (particle vector and tree are reserved for the expected number of inceptions; rare

@@ -26,15 +26,21 @@ namespace coag {
 //               = sum_j phi_second(z_j)       (otherwise: DSA, the common weight pulled out).
 //  A proposal picks term t with probability coeff_t S_first S_second / sum, then
 //  j1 ~ phi_first(z_j1) and j2 ~ phi_second(z_j2) (* w_j2). The caller rejects j1 == j2 and
-//  accepts with probability K/Khat (majorant()), otherwise the jump is fictitious.
+//  accepts with probability targetRate / pairRate (K (* w2) over the pair's proposal rate),
+//  otherwise the jump is fictitious. In the tree the columns hold integer majorants of the
+//  values (QuantizedSumTree: Q = ceil(v / 2^e) 2^e, relatively at most 2^-34 above v up to
+//  2^20 leaves, more only for values that small against the column's largest), so the sums
+//  above are over Q and pairRate() is computed from the Q's: a thinning of a majorant whose
+//  jump process is the exact one (Gillespie with fictitious jumps).
 //
 //  A "column" is one factor: phi_b or phi_b * w. Columns whose basis function is constant
 //  (CoagulationKernel::constantBasis) and that carry no varying weight are drawn uniformly and
 //  need no storage; the others live in one of two stores, chosen at build() by the capacity:
-//    - below binnedFrom() leaves (the default: always), a SumTree (fan-out 8, one flat array,
-//      exact sums): cost per event O(#terms + log N). When both factors of a term are tree
-//      columns the two walks go down together (SumTree::samplePair), so that their cache
-//      misses overlap; the same random numbers and leaves as two walks one after the other.
+//    - below binnedFrom() leaves (the default: always), a QuantizedSumTree (fan-out 8, one
+//      flat array, exact integer sums updated by one add per level): cost per event
+//      O(#terms + log N). When both factors of a term are tree columns the two walks go down
+//      together (QuantizedSumTree::samplePair), so that their cache misses overlap; the same
+//      random numbers and leaves as two walks one after the other.
 //    - from binnedFrom() leaves on, OctaveBins (the values binned by half-octave, exact
 //      integer sums per bin, a uniform member of the chosen bin accepted with probability
 //      v / bin top >= 2/3): O(#terms + #bins) cache-resident work and O(1) expected cache
@@ -42,8 +48,10 @@ namespace coag {
 //      miss more than the tree's computed addresses). Measured on the 2-core machine of
 //      issue 19 (SWA, additive kernel, alternated runs): not faster than the tree at
 //      N = 1e5 or 1e6, hence off by default (setBinnedFrom() to use it).
-//  Both draw j exactly proportional to the column's value, so the proposals, and with them
-//  the jump process, have the same law either way; only the random numbers used differ.
+//  The bins draw j exactly proportional to the column's value, the tree proportional to its
+//  majorant Q and pairRate() accepts accordingly, so the jump process has the same law either
+//  way; only the random numbers used (and the tree's fictitious jumps, below 2^-34 of them
+//  unless values span more than 10 decades) differ.
 //  No allocation per event (append() doubles the capacity when full, as the tree does).
 //
 //  Invariant: after build(), leaf j of the store holds the columns of particle j for

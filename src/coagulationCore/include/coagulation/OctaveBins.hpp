@@ -14,7 +14,7 @@ namespace coag {
 
 //- Multi-column weighted sampler for large populations: the values of each column binned by
 //  half-octave, with O(1) expected memory accesses per draw and per change, against the
-//  SumTree's walk of log8 N levels (issue 19). MajorantSampler uses it for capacities from
+//  sum tree's walk of log8 N levels (issue 19). MajorantSampler uses it for capacities from
 //  setBinnedFrom() on; off by default, as on the development machine it was not faster than
 //  the tree at N = 1e5 or 1e6 (a change first loads the leaf's positions, and the bin scans
 //  and totals cost more than the tree's cache-resident top levels; README, Performance).
@@ -29,7 +29,7 @@ namespace coag {
 //  over the occupied range, cache resident), then a member uniformly and accepts it with
 //  probability v / top_k (>= 2/3 for nonzero values), else draws another member of the same
 //  bin. Given the bin, the accepted member is proportional to its value, so the draw is
-//  exactly proportional to v: the law of SumTree::sample, with other random numbers.
+//  exactly proportional to v (QuantizedSumTree::sample: proportional to a majorant of v).
 //  One 64-bit number per candidate: its low 32 bits the member (Lemire's unbiased
 //  multiply-shift, redrawn in the rare rejected case), its high 32 bits a uniform on a grid
 //  of top_k / 2^32 cells; a value inside the drawn cell (probability 2^-32) is decided by a
@@ -42,8 +42,8 @@ namespace coag {
 //  significands (128 bits: exact for any count below 2^75) and adds and subtracts them
 //  exactly on every change; binTotal_k is that integer times the power of two, rounded
 //  (a function of the integer alone). The column total is the sum of the bin totals in a
-//  fixed order, recomputed after a change. So, as in the SumTree, the totals depend only on
-//  the current values, not on their history, and a bin of total zero is never chosen.
+//  fixed order, recomputed after a change. So, as in the QuantizedSumTree, the totals depend
+//  only on the current values, not on their history, and a bin of total zero is never chosen.
 //  Values must be >= 0 and finite.
 //
 //  Layout per column: one array of {value, leaf} records sorted by bin (a counting sort at

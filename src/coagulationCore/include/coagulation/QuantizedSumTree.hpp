@@ -22,13 +22,17 @@ namespace coag {
 //  values, and a caller that accepts the draw with probability v_j / Q_j (or, for a pair, the
 //  kernel over the pair's product of Q's) keeps the law of a draw exactly proportional to v:
 //  thinning. quantised() gives Q for any value without touching the tree, bit for bit the Q
-//  that set() or assign() store. The scale leaves q at most 2^(B-8) at build, B = the bits a
-//  leaf may use (62 - ceil(log2 capacity), at most 52, so sums stay below 2^62 and Q is an
-//  exact double); values below 2^-(B-8) of the column's largest are over-covered, which costs
-//  the caller a rejected proposal with probability below 2^-(B-8) each (B-8 >= 34 up to 2^20
-//  leaves). A value whose q would pass 2^B coarsens the column: every q becomes
-//  ceil(q / 2^k) = ceil(v 2^-(e+k)), still the quantisation of v at the new scale, O(capacity),
-//  at most once per 8 bits of growth. A column whose total is zero takes its scale afresh.
+//  that assign() stores. B = the bits a leaf may use: 62 - ceil(log2 capacity), at most 52,
+//  so that sums stay below 2^62 and Q is an exact double. A column takes its scale from its
+//  largest value at build (finishBuild) with headroomBits = 8 bits to spare: q <= 2^(B-8).
+//  Each Q exceeds its v by less than one unit 2^e, below 2^-(B-9) of that largest value, so
+//  the extra (fictitious) proposal rate, at most n 2^e / sum Q, is below 2^-(B-9) times the
+//  ratio of the largest value to the mean: 2^-33 up to 2^20 leaves when they are alike. A value
+//  whose q would pass 2^B coarsens the column: every q becomes ceil(q / 2^k) =
+//  ceil(v 2^-(e+k)), still the quantisation of v at the new scale, O(capacity), at most once
+//  per 8 bits of growth. A column whose total is zero takes its scale afresh from its next
+//  value. The scales are normal doubles (2^-960 .. 2^960, else std::domain_error), so q 2^e
+//  is exact; values may span about 2^-910 .. 2^1000.
 //
 //  Exact integer sums. Level 0 holds the q's; slot s of node k on level l+1 is the sum of
 //  node 8k+s on level l, per column 8 slots in one cache line (node block = nColumns * 8

@@ -10,6 +10,7 @@
 #include "caseChecks.H"
 #include "zeroGradientFvPatchFields.H"
 #include "addToRunTimeSelectionTable.H"
+#include <cmath>
 
 namespace Foam
 {
@@ -46,10 +47,18 @@ Foam::cloudFunctions::cellWork::cellWork
         zeroGradientFvPatchScalarField::typeName
     ),
     sum_(cloud.mesh().nCells(), Zero),
-    steps_(0)
+    steps_(0),
+    eventCost_(dict.getOrDefault<scalar>("eventCost", 1))
 {
-    caseChecks::keywords(dict, {"type"});
-    Info<< "Cloud function " << name << ": the work per cell and step,"
+    caseChecks::keywords(dict, {"type", "eventCost"});
+    if (!(eventCost_ >= 0) || !std::isfinite(eventCost_))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'eventCost' " << eventCost_ << " in " << dict.name()
+            << ": must be finite and >= 0" << exit(FatalIOError);
+    }
+    Info<< "Cloud function " << name << ": the work per cell and step"
+        << " (an event at " << eventCost_ << " of a particle),"
         << " written as " << work_.name() << endl;
 }
 
@@ -61,7 +70,7 @@ void Foam::cloudFunctions::cellWork::postCellStep()
     const cellStepper& step = cloud_.stepper();
     forAll(sum_, celli)
     {
-        sum_[celli] += step.work(celli);
+        sum_[celli] += step.work(celli, eventCost_);
     }
     ++steps_;
 
