@@ -114,18 +114,16 @@ std::vector<std::size_t> partitionRuns(const std::vector<double>& w, std::size_t
         std::stable_sort(order.begin(), order.end(),
                          [&](std::size_t a, std::size_t c) { return runSum[a] > runSum[c]; });
         std::vector<double> load(k, 0.0);
-        std::vector<std::size_t> count(k, 0);
         std::vector<std::size_t> part(n, 0);
         for (const std::size_t r : order) {
             std::size_t p = r;  // one run per part: the cut, its parts in order
             if (m > 1) {
                 p = 0;
                 for (std::size_t q = 1; q < k; ++q) {
-                    if (load[q] < load[p] || (load[q] == load[p] && count[q] < count[p])) p = q;
+                    if (load[q] < load[p]) p = q;
                 }
             }
             load[p] += runSum[r];
-            ++count[p];
             for (std::size_t i = b[r]; i < b[r + 1]; ++i) part[i] = p;
         }
         const double largest = *std::max_element(load.begin(), load.end());

@@ -39,11 +39,12 @@ double largestPart(const std::vector<double>& w, const std::vector<std::size_t>&
 //  processor boundaries: runs - 1 of them along the row instead of k - 1.
 //
 //  Method: for m = 1 .. maxRuns (while m k <= n), the exact linear partition into m k runs
-//  (partitionContiguous), the runs dealt largest first to the least loaded part (fewest
-//  runs, then lowest index, on ties: the first k runs go to k different parts, so none is
-//  empty): LPT, within 4/3 of the best dealing of those runs. The m with the smallest
+//  (partitionContiguous), the runs dealt largest first to the least loaded part (the lowest
+//  index on ties): LPT, within 4/3 of the best dealing of those runs. The m with the smallest
 //  largest share wins, the smallest m on ties, so maxRuns = 1 is the contiguous cut (run p
-//  is part p) and a larger maxRuns is never worse. Throws std::invalid_argument for maxRuns = 0 and as
+//  is part p) and a larger maxRuns is never worse. No part is left empty: a dealing leaves
+//  one empty only when fewer than k runs carry work, each then alone in its part, and the
+//  cut can isolate those runs as well, so such a dealing never wins strictly. Throws std::invalid_argument for maxRuns = 0 and as
 //  partitionContiguous.
 std::vector<std::size_t> partitionRuns(const std::vector<double>& w, std::size_t k,
                                        std::size_t maxRuns);
