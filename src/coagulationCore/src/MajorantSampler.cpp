@@ -51,8 +51,6 @@ void MajorantSampler::configure(const CoagulationKernel& kernel, const std::stri
     termCoeff_.clear();
     termFirst_.clear();
     termSecond_.clear();
-    termFirstBasis_.clear();
-    termSecondBasis_.clear();
     for (const MajorantTerm& t : terms) {
         if (t.first < 0 || t.first >= nb || t.second < 0 || t.second >= nb || !(t.coeff > 0.0)
             || !std::isfinite(t.coeff)) {
@@ -63,8 +61,6 @@ void MajorantSampler::configure(const CoagulationKernel& kernel, const std::stri
         termCoeff_.push_back(t.coeff);
         termFirst_.push_back(columnFor(t.first, false, who));
         termSecond_.push_back(columnFor(t.second, weightedSecond_, who));
-        termFirstBasis_.push_back(static_cast<std::size_t>(t.first));
-        termSecondBasis_.push_back(static_cast<std::size_t>(t.second));
     }
     if (nTreeColumns_ > QuantizedSumTree::maxColumns) {
         throw std::invalid_argument(who + ": kernel '" + kernel.name() + "' needs "

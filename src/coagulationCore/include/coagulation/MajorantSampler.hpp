@@ -9,7 +9,6 @@
 #include "coagulation/Rng.hpp"
 #include "coagulation/QuantizedSumTree.hpp"
 
-#include <algorithm>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -28,10 +27,10 @@ namespace coag {
 //  j1 ~ phi_first(z_j1) and j2 ~ phi_second(z_j2) (* w_j2). The caller rejects j1 == j2 and
 //  accepts with probability targetRate / pairRate (K (* w2) over the pair's proposal rate),
 //  otherwise the jump is fictitious. In the tree the columns hold integer majorants of the
-//  values (QuantizedSumTree: Q = ceil(v / 2^e) 2^e, relatively at most 2^-34 above v up to
-//  2^20 leaves, more only for values that small against the column's largest), so the sums
-//  above are over Q and pairRate() is computed from the Q's: a thinning of a majorant whose
-//  jump process is the exact one (Gillespie with fictitious jumps).
+//  values (QuantizedSumTree: Q = ceil(v / 2^e) 2^e, above v by less than 2^-33 of the
+//  column's largest value up to 2^20 leaves), so the sums above are over Q and pairRate() is
+//  computed from the Q's: a thinning of a majorant whose jump process is the exact one
+//  (Gillespie with fictitious jumps).
 //
 //  A "column" is one factor: phi_b or phi_b * w. Columns whose basis function is constant
 //  (CoagulationKernel::constantBasis) and that carry no varying weight are drawn uniformly and
@@ -50,8 +49,8 @@ namespace coag {
 //      N = 1e5 or 1e6, hence off by default (setBinnedFrom() to use it).
 //  The bins draw j exactly proportional to the column's value, the tree proportional to its
 //  majorant Q and pairRate() accepts accordingly, so the jump process has the same law either
-//  way; only the random numbers used (and the tree's fictitious jumps, below 2^-34 of them
-//  unless values span more than 10 decades) differ.
+//  way; only the random numbers used (and the tree's fictitious jumps, below 2^-33 of them
+//  times the ratio of a column's largest value to its mean) differ.
 //  No allocation per event (append() doubles the capacity when full, as the tree does).
 //
 //  Invariant: after build(), leaf j of the store holds the columns of particle j for
@@ -302,8 +301,6 @@ private:
     std::vector<std::size_t> termFirst_;   // column of phi_first
     std::vector<std::size_t> termSecond_;  // column of phi_second (* w for SWA)
     std::vector<double> termRate_;
-    std::vector<std::size_t> termFirstBasis_;
-    std::vector<std::size_t> termSecondBasis_;
     std::vector<double> phi_;
     std::vector<double> phi2_;
     std::size_t lastTerm_ = 0;       // rateSum(): the last term with a positive rate
