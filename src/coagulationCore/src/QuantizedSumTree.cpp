@@ -153,17 +153,6 @@ void QuantizedSumTree::rebuild()
     }
 }
 
-void QuantizedSumTree::addToPath(std::size_t j, const std::uint64_t* delta)
-{
-    std::size_t idx = j;
-    for (std::size_t l = 0; l < levelOffset_.size(); ++l) {
-        std::uint64_t* block = base_ + levelOffset_[l] + (idx >> 3) * blockSize_ + (idx & 7);
-        for (std::size_t c = 0; c < ncol_; ++c) block[c * fanOut] += delta[c];
-        idx >>= 3;
-    }
-    for (std::size_t c = 0; c < ncol_; ++c) totals_[c] += delta[c];
-}
-
 void QuantizedSumTree::moveLeaf(std::size_t from, std::size_t to)
 {
     // the same integers at the same scale, moved as exact deltas (modulo 2^64) without
@@ -171,10 +160,10 @@ void QuantizedSumTree::moveLeaf(std::size_t from, std::size_t to)
     std::uint64_t delta[maxColumns];
     if (from != to) {
         for (std::size_t c = 0; c < ncol_; ++c) delta[c] = leaf(from, c) - leaf(to, c);
-        addToPath(to, delta);
+        addToPath<0>(to, delta);
     }
     for (std::size_t c = 0; c < ncol_; ++c) delta[c] = 0 - leaf(from, c);
-    addToPath(from, delta);
+    addToPath<0>(from, delta);
 }
 
 void QuantizedSumTree::resizeCapacity(std::size_t capacity)

@@ -206,8 +206,6 @@ private:
     //- Column c coarsened by k bits: every leaf q -> ceil(q / 2^k), sums rebuilt
     void coarsen(std::size_t c, int k);
     void setExponent(std::size_t c, int e);
-    //- delta[c] (modulo 2^64) added to leaf j, its ancestors and the totals
-    void addToPath(std::size_t j, const std::uint64_t* delta);
 
     template<bool PrefetchLeaves>
 #if defined(__GNUC__)
@@ -251,23 +249,27 @@ private:
     template<std::size_t NC>
     void assignColumns(std::size_t j, const double* values)
     {
-        const std::size_t nc = NC > 0 ? NC : ncol_;
         std::uint64_t delta[NC > 0 ? NC : maxColumns];
-        const std::size_t leafBlock = (j >> 3) * (nc * fanOut) + (j & 7);
-        for (std::size_t c = 0; c < nc; ++c) {
-            std::uint64_t& q = base_[leafBlock + c * fanOut];
-            const std::uint64_t qNew = quantise(c, values[c]);
-            delta[c] = qNew - q;  // modulo 2^64: the adds below are exact either way
-            q = qNew;
-            totals_[c] += delta[c];
+        for (std::size_t c = 0; c < (NC > 0 ? NC : ncol_); ++c) {
+            delta[c] = quantise(c, values[c]) - leaf(j, c);  // modulo 2^64: the adds are exact
         }
-        std::size_t idx = j >> 3;
+        addToPath<NC>(j, delta);
+    }
+
+    //- delta[c] (modulo 2^64) added to leaf j, its ancestors and the totals, for NC columns
+    //  (ncol_ when NC is 0)
+    template<std::size_t NC>
+    void addToPath(std::size_t j, const std::uint64_t* delta)
+    {
+        const std::size_t nc = NC > 0 ? NC : ncol_;
+        std::size_t idx = j;
         const std::size_t nLevels = levelOffset_.size();
-        for (std::size_t l = 1; l < nLevels; ++l) {
+        for (std::size_t l = 0; l < nLevels; ++l) {
             std::uint64_t* block = base_ + levelOffset_[l] + (idx >> 3) * (nc * fanOut) + (idx & 7);
             for (std::size_t c = 0; c < nc; ++c) block[c * fanOut] += delta[c];
             idx >>= 3;
         }
+        for (std::size_t c = 0; c < nc; ++c) totals_[c] += delta[c];
     }
 
     std::size_t leafIndex(std::size_t j, std::size_t c) const
