@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 #include "TestHelpers.hpp"
 
+#include <limits>
 #include <numeric>
 
 using namespace coagtest;
@@ -169,4 +170,39 @@ TEST(QuantizedSumTree, EmptyColumnTakesItsScaleAfresh)
     const double unreachable = 1e-300;
     tree.assign(5, &zero);
     EXPECT_THROW(tree.assign(2, &unreachable), std::domain_error);
+}
+
+//- Values that are NaN, infinite or negative (a bad particle weight) are refused, at build and
+//  at a change, and a refused change leaves the leaf as it was; an SWA step with such a weight
+//  stops with the error instead of running on garbage integers
+TEST(QuantizedSumTree, RefusesValuesThatAreNotFiniteAndNonNegative)
+{
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double inf = std::numeric_limits<double>::infinity();
+    for (const double bad : {nan, inf, -1.0, -inf}) {
+        QuantizedSumTree tree;
+        tree.reset(2, 8);
+        tree.stage(0, 0, 1.0);
+        tree.stage(0, 1, bad);
+        EXPECT_THROW(tree.finishBuild(1), std::domain_error) << bad;
+        tree.reset(2, 8);
+        tree.stage(0, 0, 1.0);
+        tree.stage(0, 1, 2.0);
+        tree.finishBuild(1);
+        const std::uint64_t before = tree.totalInteger(1);
+        const double values[2] = {1.0, bad};
+        EXPECT_THROW(tree.assign(0, values), std::domain_error) << bad;
+        EXPECT_EQ(tree.totalInteger(1), before) << bad;
+        EXPECT_EQ(tree.leaf(0, 1), before) << bad;
+
+        auto kernel = makeKernel("additive", 1.0);
+        auto swa = makeCellAlgorithm("SWA", *kernel, InceptionModel{});
+        CellPopulation pop;
+        pop.volume = 10.0;
+        for (int j = 0; j < 10; ++j) pop.particles.push_back(Particle{ParticleType{1.0}, 1.0, j});
+        pop.particles[3].weight = bad;
+        Rng rng(1);
+        StepStatistics stats;
+        EXPECT_THROW(swa->advance(pop, 0.1, rng, stats), std::domain_error) << bad;
+    }
 }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <new>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -85,8 +86,17 @@ void QuantizedSumTree::setExponent(std::size_t c, int e)
     limitValue_[c] = std::ldexp(1.0, bits_ + e);
 }
 
+void QuantizedSumTree::throwBadValue(std::size_t c, double v)
+{
+    std::ostringstream os;
+    os << "coag::QuantizedSumTree: value " << v << " in column " << c
+       << " (a particle's weight times a kernel basis function) is not finite and >= 0";
+    throw std::domain_error(os.str());
+}
+
 void QuantizedSumTree::fitScale(std::size_t c, double v)
 {
+    if (!(v >= 0.0) || !std::isfinite(v)) throwBadValue(c, v);
     const int e = exponentFor(v);
     if (totals_[c] == 0) {
         setExponent(c, e);  // every leaf is zero: any scale holds them
@@ -118,6 +128,7 @@ void QuantizedSumTree::finishBuild(std::size_t n)
         for (std::size_t j = 0; j < n; ++j) {
             double v;
             std::memcpy(&v, &base_[leafIndex(j, c)], sizeof v);
+            if (!(v >= 0.0) || !std::isfinite(v)) throwBadValue(c, v);
             largest = std::max(largest, v);
         }
         setExponent(c, exponentFor(largest));

@@ -91,12 +91,15 @@ public:
     int exponent(std::size_t c) const { return exponent_[c]; }
 
     //- Set every column of leaf j (values[c] >= 0, finite, c < columns()) and its ancestors:
-    //  one exact add per level and column.
+    //  one exact add per level and column. A value that is NaN, infinite or negative throws
+    //  std::domain_error (as does finishBuild()), and the tree keeps its old leaf.
     void assign(std::size_t j, const double* values)
     {
         for (std::size_t c = 0; c < ncol_; ++c) {
-            if (values[c] > 0.0 && (totals_[c] == 0 || values[c] > limitValue_[c])) {
-                fitScale(c, values[c]);
+            const double v = values[c];
+            // NaN, infinite and negative values go to fitScale, which refuses them
+            if (!(v >= 0.0 && v <= limitValue_[c]) || (v > 0.0 && totals_[c] == 0)) {
+                fitScale(c, v);
             }
         }
         switch (ncol_) {
@@ -201,8 +204,10 @@ private:
 
     //- The exponent that puts `largest` headroomBits below the leaf limit 2^bits_
     int exponentFor(double largest) const;
-    //- Column c's scale: coarsened (or, when its total is zero, chosen afresh) so that v fits
+    //- Column c's scale: coarsened (or, when its total is zero, chosen afresh) so that v fits;
+    //  std::domain_error for v NaN, infinite or negative
     void fitScale(std::size_t c, double v);
+    [[noreturn]] static void throwBadValue(std::size_t c, double v);
     //- Column c coarsened by k bits: every leaf q -> ceil(q / 2^k), sums rebuilt
     void coarsen(std::size_t c, int k);
     void setExponent(std::size_t c, int e);
