@@ -24,7 +24,8 @@ stopAt-nextWrite run (issue 19, case tests); B105-B107 in the random engine, the
 one-pass assign (retired with that tree) and the report's --check-sigma, B108-B109 in the linear partition of
 workDecomposition (issue 19, core, python and case tests); B110-B115 in the quantised sum tree
 and the pair rate that accepts against it (issue 19, core tests); B116-B118 in the dealt runs
-of workDecomposition's runsPerPart (issue 19, core and case tests). B14-B17 now
+of workDecomposition's runsPerPart (issue 19, core and case tests); B119 in the quantised
+tree's refusal of values that are not finite and >= 0. B14-B17 now
 sit in the coagulationPost package (the campaign measured them in the scripts it came from).
 
     bugs.py list                 id, file, targeted tests, what the bug is
@@ -514,7 +515,7 @@ BUGS = {
              SAMPLERTESTS,
              "quantised tree: a value rounded down to its scale, so Q may be below v (no majorant)"),
     "B111": (TREECPP,
-             "    for (std::size_t c = 0; c < ncol_; ++c) delta[c] = 0 - leaf(from, c);\n    addToPath(from, delta);\n",
+             "    for (std::size_t c = 0; c < ncol_; ++c) delta[c] = 0 - leaf(from, c);\n    addToPath<0>(from, delta);\n",
              "",
              SAMPLERTESTS,
              "quantised tree: a removal by swap leaves the moved leaf also in its old slot"),
@@ -534,8 +535,8 @@ BUGS = {
              SAMPLERTESTS,
              "quantised tree descent: the first slot's boundary draw goes to the first slot"),
     "B115": (TREE,
-             "            if (values[c] > 0.0 && (totals_[c] == 0 || values[c] > limitValue_[c])) {\n",
-             "            if (values[c] > 0.0 && values[c] > limitValue_[c]) {\n",
+             "            if (!(v >= 0.0 && v <= limitValue_[c]) || (v > 0.0 && totals_[c] == 0)) {\n",
+             "            if (!(v >= 0.0 && v <= limitValue_[c])) {\n",
              SAMPLERTESTS,
              "quantised tree: an empty column keeps its old scale (values far below it over-covered)"),
     "B107": (CHECKS,
@@ -553,6 +554,11 @@ BUGS = {
              "            if (partsNeeded(w, mid) < k) hi = mid;\n",
              "core.WorkPartition|case_parallel",
              "linear partition: the bisection keeps a bottleneck that needs fewer parts than it may use"),
+    "B119": (TREECPP,
+             "    if (!(v >= 0.0) || !std::isfinite(v)) throwBadValue(c, v);\n    const int e = exponentFor(v);\n",
+             "    const int e = exponentFor(v);\n",
+             SAMPLERTESTS,
+             "quantised tree: a change to a NaN, infinite or negative value is taken (garbage integer leaf)"),
     "B116": ("src/coagulationCore/src/WorkPartition.cpp",
              "                    if (load[q] < load[p]) p = q;\n",
              "                    if (load[q] > load[p]) p = q;\n",
