@@ -42,6 +42,17 @@ void expectValid(const std::vector<std::size_t>& b, std::size_t n, std::size_t k
     for (std::size_t p = 0; p < k; ++p) EXPECT_LT(b[p], b[p + 1]) << "part " << p << " empty";
 }
 
+//- n random weights: a fifth zero, a tenth heavy (up to 50), the rest exponential(1)
+std::vector<double> randomWeights(Rng& rng, std::size_t n)
+{
+    std::vector<double> w(n);
+    for (double& x : w) {
+        const double u = rng.uniform();
+        x = u < 0.2 ? 0.0 : (u > 0.9 ? 50.0 * rng.uniform() : rng.exponential(1.0));
+    }
+    return w;
+}
+
 } // namespace
 
 //- The bottleneck equals the brute-force optimum on 600 random cases (n <= 11, k <= 5, some
@@ -52,11 +63,7 @@ TEST(WorkPartition, OptimalAgainstBruteForce)
     for (int c = 0; c < 600; ++c) {
         const std::size_t n = 1 + rng.uniformIndex(11);
         const std::size_t k = 1 + rng.uniformIndex(std::min<std::size_t>(n, 5));
-        std::vector<double> w(n);
-        for (double& x : w) {
-            const double u = rng.uniform();
-            x = u < 0.2 ? 0.0 : (u > 0.9 ? 50.0 * rng.uniform() : rng.exponential(1.0));
-        }
+        const std::vector<double> w = randomWeights(rng, n);
         const std::vector<std::size_t> b = partitionContiguous(w, k);
         expectValid(b, n, k);
         const double opt = bruteForce(w, k);
@@ -120,11 +127,7 @@ TEST(WorkPartition, RunsNeverWorseThanTheCut)
         const std::size_t n = 1 + rng.uniformIndex(30);
         const std::size_t k = 1 + rng.uniformIndex(std::min<std::size_t>(n, 5));
         const std::size_t m = 1 + rng.uniformIndex(4);
-        std::vector<double> w(n);
-        for (double& x : w) {
-            const double u = rng.uniform();
-            x = u < 0.2 ? 0.0 : (u > 0.9 ? 50.0 * rng.uniform() : rng.exponential(1.0));
-        }
+        const std::vector<double> w = randomWeights(rng, n);
         const std::vector<std::size_t> b = partitionContiguous(w, k);
         const std::vector<std::size_t> part = partitionRuns(w, k, m);
         expectValidDealing(part, n, k, m);
