@@ -22,6 +22,16 @@
 #                               issue's n = 8192: ... 2 250 250 8192)
 #   CONFIGS="1x1 2x1work" ...   a subset of the configurations
 #   EVENTCOST=0.53 ...          cellWork's eventCost for the weights (default 1)
+#   SAMPLE=1 ...                statistics instead of speed alone: every run samples the
+#                               moments from the start time on and has its own seed (an
+#                               independent continuation of the common start), and each
+#                               configuration's per-cell time averages (coagulationReport,
+#                               intervals that see the samples' correlation) are compared with
+#                               the 1x1 run of the same round: |difference| / standard error
+#                               of the difference, the largest per moment. Continuations of
+#                               one start state are positively correlated, so the test is
+#                               conservative. The sampling costs time: do not mix these walls
+#                               with those of runs without it.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 . "$here/../../etc/functions"
@@ -55,6 +65,11 @@ foamDictionary -entry cloudFunctions -add "{ work { type cellWork; ${EVENTCOST:+
     constant/coagulationProperties > /dev/null
 OMP_NUM_THREADS=2 coagulationFoam > log.warm 2>&1 || { tail log.warm; exit 1; }
 foamDictionary -entry endTime -set "$t1" system/controlDict > /dev/null
+if [ "${SAMPLE:-0}" = 1 ]; then
+    # the averages start where the configurations do (a time before t0 would pull in the
+    # start's samples, common to all)
+    foamDictionary -entry sampling/tRelax -set "$t0" constant/coagulationProperties > /dev/null
+fi
 # writeInterval counts from the start time
 foamDictionary -entry writeInterval -set "$(awk -v m="$steps" -v d="$dt" 'BEGIN { print m * d }')" system/controlDict > /dev/null
 
@@ -91,6 +106,12 @@ for r in $(seq 1 "$rounds"); do
                 ;;
             *) setDecomposition hierarchical "weightField coagulationWork;" ;;
         esac
+        if [ "${SAMPLE:-0}" = 1 ]; then
+            # one seed per run: round r, configuration k -> 1000 r + k + 2 (the start's is 1)
+            k=0; for x in ${CONFIGS:-1x1 2x1work 1x2 2x1simple 2x1cloudMove}; do
+                [ "$x" = "$config" ] && break; k=$((k + 1)); done
+            foamDictionary -entry seed -set $((1000 * r + k + 2)) constant/coagulationProperties > /dev/null
+        fi
         [ "$config" = 2x1cloudMove ] && \
             foamDictionary -entry OptimisationSwitches -add "{ coagulationCloudMove 1; }" system/controlDict > /dev/null
         start=$(date +%s.%N)
@@ -123,9 +144,42 @@ else:
 print("%-13s %3s %8s %10.3f %10.3f %10s %8.3f %8.3f %9.1f %8.2f %9d %12.6g"
       % (config, r, wall, coag, transp, mps, wb, lb, sent, kb, particles, mass))
 PY
+        if [ "${SAMPLE:-0}" = 1 ]; then
+            "$COAGULATIONFOAM_PYTHON" "$COAGULATIONFOAM_DIR/applications/utilities/coagulationReport/coagulationReport.py" \
+                --case . --out results --no-plots > log.report 2>&1 || { tail log.report; exit 1; }
+        fi
         cd "$out"
     done
 done
+if [ "${SAMPLE:-0}" = 1 ]; then
+    echo "per-cell time averages against the 1x1 run of the same round (largest |z| per moment):"
+    "$COAGULATIONFOAM_PYTHON" - "$out" "$rounds" ${CONFIGS:-1x1 2x1work 1x2 2x1simple 2x1cloudMove} <<'PY' | tee "$out/statistics.txt"
+import sys
+import numpy as np
+out, rounds, configs = sys.argv[1], int(sys.argv[2]), sys.argv[3:]
+load = lambda c, r: np.genfromtxt("%s/%s_%d/results/moments.csv" % (out, c, r), delimiter=",", names=True)
+allz = {}
+for r in range(1, rounds + 1):
+    ref = load("1x1", r)
+    for c in configs:
+        if c == "1x1":
+            continue
+        m = load(c, r)
+        assert np.allclose(m["x"], ref["x"]), "different cells"
+        zs = []
+        for k in range(4):
+            se = np.hypot(m["M%d_ci95" % k], ref["M%d_ci95" % k]) / 1.96
+            ok = se > 0
+            zs.append(np.abs(m["M%d_mean" % k] - ref["M%d_mean" % k])[ok] / se[ok])
+        allz.setdefault(c, []).extend(np.concatenate(zs))
+        print("  %-13s round %d: largest |z| M0..M3 %s over %d cells"
+              % (c, r, " ".join("%.2f" % z.max() for z in zs), len(ref["x"])))
+for c, z in allz.items():
+    z = np.asarray(z)
+    print("  %-13s all rounds: %d comparisons, %d with |z| > 3 (%.1f expected of a normal), largest %.2f"
+          % (c, len(z), int((z > 3).sum()), 0.0027 * len(z), z.max()))
+PY
+fi
 echo "median wall per configuration, and speedup against 1x1:"
 "$COAGULATIONFOAM_PYTHON" - "$out/runs.txt" <<'PY'
 import sys

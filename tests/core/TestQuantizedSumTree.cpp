@@ -56,6 +56,16 @@ TEST(QuantizedSumTree, BuildQuantisesEachColumnBelowItsLargestValue)
     // small integers and powers of two stay exact: the totals are the sums
     EXPECT_EQ(tree.total(0), 4.25 + tree.value(4, 0));
     EXPECT_EQ(tree.total(1), 4.2e12);
+
+    // a positive value whose quotient underflows to zero (1e-300 at the scale of 1e300,
+    // 2^953) is still one unit, so that it can be drawn
+    QuantizedSumTree wide;
+    wide.reset(1, 2);
+    wide.stage(0, 0, 1e300);
+    wide.stage(1, 0, 1e-300);
+    wide.finishBuild(2);
+    EXPECT_EQ(wide.leaf(1, 0), 1u);
+    expectQuantisationOf(wide, {{1e300, 1e-300}}, "wide");
 }
 
 //- assign() and moveLeaf() add exact deltas: after many random changes, with values over

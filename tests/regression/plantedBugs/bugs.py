@@ -25,7 +25,8 @@ one-pass assign (retired with that tree) and the report's --check-sigma, B108-B1
 workDecomposition (issue 19, core, python and case tests); B110-B115 in the quantised sum tree
 and the pair rate that accepts against it (issue 19, core tests); B116-B118 in the dealt runs
 of workDecomposition's runsPerPart (issue 19, core and case tests); B119 in the quantised
-tree's refusal of values that are not finite and >= 0. B14-B17 now
+tree's refusal of values that are not finite and >= 0; B122-B123 in its ceiling without
+std::ceil (issue 19, fifth session). B14-B17 now
 sit in the coagulationPost package (the campaign measured them in the scripts it came from).
 
     bugs.py list                 id, file, targeted tests, what the bug is
@@ -510,10 +511,20 @@ BUGS = {
     # B106 (the double sum tree's assign() association) went with that tree: the quantised
     # tree's sums are exact integers, which B110-B115 plant against
     "B110": (TREE,
-             "        const double t = std::ceil(v * scaleInverse_[c]);\n",
-             "        const double t = std::floor(v * scaleInverse_[c]);\n",
+             "        std::uint64_t r = static_cast<std::uint64_t>(q) + std::uint64_t(static_cast<double>(q) < t);\n",
+             "        std::uint64_t r = static_cast<std::uint64_t>(q);\n",
              SAMPLERTESTS,
              "quantised tree: a value rounded down to its scale, so Q may be below v (no majorant)"),
+    "B122": (TREE,
+             "        std::uint64_t r = static_cast<std::uint64_t>(q) + std::uint64_t(static_cast<double>(q) < t);\n",
+             "        std::uint64_t r = static_cast<std::uint64_t>(q) + std::uint64_t(static_cast<double>(q) <= t);\n",
+             SAMPLERTESTS,
+             "quantised tree: a whole quotient rounded up one unit (the ceiling without std::ceil)"),
+    "B123": (TREE,
+             "        r += std::uint64_t(r == 0) & std::uint64_t(v > 0.0);\n",
+             "",
+             SAMPLERTESTS,
+             "quantised tree: a positive value whose quotient underflows to 0 gets no unit (never drawn)"),
     "B111": (TREECPP,
              "    for (std::size_t c = 0; c < ncol_; ++c) delta[c] = 0 - leaf(from, c);\n    addToPath<0>(from, delta);\n",
              "",

@@ -273,10 +273,11 @@ private:
         return binned_ ? value : tree_.quantised(col.tree, value);
     }
 
-    double columnTotal(const Column& col, std::size_t n)
+    //- The column's total as of rateSum() (columnTotals_ filled first)
+    double columnTotal(const Column& col, std::size_t n) const
     {
         if (col.uniform) return col.constant * static_cast<double>(n);
-        return binned_ ? bins_.total(col.tree) : tree_.total(col.tree);
+        return columnTotals_[col.tree];
     }
 
     std::size_t sampleColumn(const Column& col, std::size_t n, Rng& rng,

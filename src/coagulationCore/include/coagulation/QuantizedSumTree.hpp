@@ -80,13 +80,13 @@ public:
     std::uint64_t leaf(std::size_t j, std::size_t c) const { return base_[leafIndex(j, c)]; }
     double value(std::size_t j, std::size_t c) const
     {
-        return static_cast<double>(leaf(j, c)) * scale_[c];
+        return toDouble(leaf(j, c)) * scale_[c];
     }
     //- Q for value v in column c at the current scale: the value(j, c) that set(j, c, v) gives
     //  when it does not coarsen the column.
     double quantised(std::size_t c, double v) const
     {
-        return static_cast<double>(quantise(c, v)) * scale_[c];
+        return toDouble(quantise(c, v)) * scale_[c];
     }
     int exponent(std::size_t c) const { return exponent_[c]; }
 
@@ -116,7 +116,7 @@ public:
 
     //- Integer sum of column c, and as a double: sum q 2^e_c (rounded to double).
     std::uint64_t totalInteger(std::size_t c) const { return totals_[c]; }
-    double total(std::size_t c) const { return static_cast<double>(totals_[c]) * scale_[c]; }
+    double total(std::size_t c) const { return toDouble(totals_[c]) * scale_[c]; }
 
     //- Leaf j with probability q_j / totalInteger(c), for u in {0, ..., totalInteger(c) - 1}.
     //  sample(c, u, leafData, leafBytes): the same leaf; in a tree too big for the caches it
@@ -195,12 +195,24 @@ public:
 
 private:
     //- ceil(v 2^-e_c), at least 1 for v > 0 (a quotient below the smallest normal double may
-    //  round; it is then below 1 and its ceiling is 1 either way)
+    //  round to 0; its ceiling is 1 either way). For v <= 2^(bits_ + e_c), as every caller
+    //  ensures (assign() fits the scale first): the quotient t <= 2^52 truncates exactly to a
+    //  signed integer, and one compare makes it the ceiling. (std::ceil is a library call or
+    //  a 6-instruction sequence on baseline x86-64, the flags of both builds; measured: 7 %
+    //  of an SWA event in the solver.)
     std::uint64_t quantise(std::size_t c, double v) const
     {
-        const double t = std::ceil(v * scaleInverse_[c]);
-        return v > 0.0 && t < 1.0 ? 1 : static_cast<std::uint64_t>(t);
+        const double t = v * scaleInverse_[c];
+        const std::int64_t q = static_cast<std::int64_t>(t);
+        std::uint64_t r = static_cast<std::uint64_t>(q) + std::uint64_t(static_cast<double>(q) < t);
+        r += std::uint64_t(r == 0) & std::uint64_t(v > 0.0);
+        return r;
     }
+
+    //- An integer below 2^63 (every leaf, sum and total: at most 2^62) as a double, rounded as
+    //  static_cast<double> rounds it; the signed conversion is one instruction on x86-64, the
+    //  unsigned one a branch and several
+    static double toDouble(std::uint64_t q) { return static_cast<double>(static_cast<std::int64_t>(q)); }
 
     //- The exponent that puts `largest` headroomBits below the leaf limit 2^bits_
     int exponentFor(double largest) const;
