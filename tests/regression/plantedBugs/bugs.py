@@ -521,7 +521,7 @@ BUGS = {
              SAMPLERTESTS,
              "quantised tree: a whole quotient rounded up one unit (the ceiling without std::ceil)"),
     "B123": (TREE,
-             "        r += std::uint64_t(r == 0) & std::uint64_t(v > 0.0);\n",
+             "        if (r == 0 && v != 0.0) r = 1;  // rare: t underflowed (a huge scale beside a tiny v)\n",
              "",
              SAMPLERTESTS,
              "quantised tree: a positive value whose quotient underflows to 0 gets no unit (never drawn)"),

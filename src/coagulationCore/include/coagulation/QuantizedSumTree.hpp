@@ -205,7 +205,7 @@ private:
         const double t = v * scaleInverse_[c];
         const std::int64_t q = static_cast<std::int64_t>(t);
         std::uint64_t r = static_cast<std::uint64_t>(q) + std::uint64_t(static_cast<double>(q) < t);
-        r += std::uint64_t(r == 0) & std::uint64_t(v > 0.0);
+        if (r == 0 && v != 0.0) r = 1;  // rare: t underflowed (a huge scale beside a tiny v)
         return r;
     }
 
