@@ -3,6 +3,28 @@
 # closes, and the time-averaged moments agree with the analytic solution as in serial.
 . "$(dirname "$0")/caseLib.sh"
 
+# compareMoments a.csv b.csv: two independent runs' time-averaged moments (coagulationReport's
+# moments.csv) agree within their statistical error in every cell and moment: |difference|
+# < 4 standard errors of the difference (each run's ci95 allows for the time correlation);
+# prints the largest |z| per moment
+compareMoments()
+{
+    "$COAGULATIONFOAM_PYTHON" - "$1" "$2" <<'PY'
+import sys, numpy as np
+p = np.genfromtxt(sys.argv[1], delimiter=",", names=True)
+s = np.genfromtxt(sys.argv[2], delimiter=",", names=True)
+assert np.allclose(p["x"], s["x"]), "different cells"
+worst = 0.0
+for k in range(4):
+    d = p[f"M{k}_mean"] - s[f"M{k}_mean"]
+    se = np.hypot(p[f"M{k}_ci95"], s[f"M{k}_ci95"]) / 1.96
+    z = np.abs(d[1:]) / se[1:]          # the first cell's M2, M3 can have zero variance
+    worst = max(worst, z.max())
+    print(f"M{k}: largest |parallel - serial| = {z.max():.2f} standard errors")
+sys.exit(0 if worst < 4 else 1)
+PY
+}
+
 case=$(newCase constantKernelDuct parallel)
 cd "$case"
 setEntry . constant/coagulationProperties statisticalWeight/n 1024
@@ -26,21 +48,49 @@ cd "$serial"
 setEntry . constant/coagulationProperties seed 2     # an independent realisation
 runApplication coagulationFoam
 $report --case . --out results --no-plots > log.report || fail "serial report failed"
-"$COAGULATIONFOAM_PYTHON" - "$case/results/moments.csv" "$serial/results/moments.csv" <<'PY' || fail "parallel and serial moments differ"
-import sys, numpy as np
-p = np.genfromtxt(sys.argv[1], delimiter=",", names=True)
-s = np.genfromtxt(sys.argv[2], delimiter=",", names=True)
-assert np.allclose(p["x"], s["x"]), "different cells"
-worst = 0.0
-for k in range(4):
-    d = p[f"M{k}_mean"] - s[f"M{k}_mean"]
-    se = np.hypot(p[f"M{k}_ci95"], s[f"M{k}_ci95"]) / 1.96
-    z = np.abs(d[1:]) / se[1:]          # the first cell's M2, M3 can have zero variance
-    worst = max(worst, z.max())
-    print(f"M{k}: largest |parallel - serial| = {z.max():.2f} standard errors")
-sys.exit(0 if worst < 4 else 1)
-PY
+compareMoments "$case/results/moments.csv" "$serial/results/moments.csv" \
+    || fail "parallel and serial moments differ"
 echo "PASS parallel run on 2 processors: balance closed, consistent with the analytic and the serial run"
+
+# The same case dealt to the 2 ranks as 6 alternating runs of cells of unequal length
+# (method manual, a hand-written cellDecomposition): 5 processor faces along the duct, so
+# every particle crosses between the ranks up to 5 times and both ranks send (with simple's
+# one cut and the flow along +x only processor0 does). Its time averages agree with the
+# serial run's as the simple decomposition's do.
+runs=$(newCase constantKernelDuct parallel_runs)
+cp "$case/constant/coagulationProperties" "$runs/constant/coagulationProperties"
+cp "$case/system/controlDict" "$runs/system/controlDict"
+cd "$runs"
+nCells=$(grep "nCells:" log.blockMesh | awk '{print $2}')
+[ "$nCells" = 50 ] || fail "runs: the duct has $nCells cells, the runs below deal 50"
+{
+    echo 'FoamFile { version 2.0; format ascii; class labelList; location "constant"; object cellDecomposition; }'
+    echo "$nCells"
+    echo "("
+    # cells along x (blockMesh numbers them so): runs of 7, 12, 5, 10, 9, 7 cells
+    for run in "0 7" "1 12" "0 5" "1 10" "0 9" "1 7"; do
+        read -r rank length <<< "$run"
+        for ((i = 0; i < length; ++i)); do echo "$rank"; done
+    done
+    echo ")"
+} > constant/cellDecomposition
+foamDictionary -entry method -set manual system/decomposeParDict > /dev/null
+foamDictionary -entry coeffs -set '{ dataFile "cellDecomposition"; }' system/decomposeParDict > /dev/null
+runApplication decomposePar
+procFaces=$(grep "^Number of processor faces = " log.decomposePar | awk '{print $NF}')
+[ "$procFaces" = 5 ] || fail "runs: decomposePar made ${procFaces:-no} processor faces, 5 expected"
+runParallel -np 2 coagulationFoam
+checkBalance log.coagulationFoam
+$report --case . --out results --no-plots > log.report || fail "runs: report failed"
+read -r sent0 sent1 <<< "$(grep -E "^ +processor[01]: " log.coagulationFoam | tail -2 | awk '{print $7}' | tr '\n' ' ')"
+awk -v a="${sent0:-0}" -v b="${sent1:-0}" 'BEGIN { exit !(a > 0 && b > 0) }' \
+    || fail "runs: particles sent per step $sent0 (processor0), $sent1 (processor1): both should send"
+zRuns=$(compareMoments "$runs/results/moments.csv" "$serial/results/moments.csv") \
+    || { echo "$zRuns"; fail "runs: decomposed and serial moments differ"; }
+echo "$zRuns"
+echo "PASS 6 alternating runs of cells on 2 ranks ($procFaces processor faces; particles sent per step" \
+     "$sent0 by processor0, $sent1 by processor1): balance closed, largest |z| against serial" \
+     "$(echo "$zRuns" | awk '{printf "%s%s %s", (NR > 1 ? ", " : ""), $1, $(NF-2)}')"
 
 # Issue 19: the array transport in a decomposed run hands the particles that reach a
 # processor patch over in bulk and appends what arrives, so its list is the one Cloud::move

@@ -25,7 +25,8 @@ one-pass assign (retired with that tree) and the report's --check-sigma, B108-B1
 workDecomposition (issue 19, core, python and case tests); B110-B115 in the quantised sum tree
 and the pair rate that accepts against it (issue 19, core tests); B116-B118 in the dealt runs
 of workDecomposition's runsPerPart (issue 19, core and case tests); B119 in the quantised
-tree's refusal of values that are not finite and >= 0; B122-B123 in its ceiling without
+tree's refusal of values that are not finite and >= 0; B120-B121 in the arrivals of a decomposed
+run's particle exchange (issue 19, case_parallel); B122-B123 in the tree's ceiling without
 std::ceil (issue 19, fifth session). B14-B17 now
 sit in the coagulationPost package (the campaign measured them in the scripts it came from).
 
@@ -600,6 +601,29 @@ BUGS = {
              '    dict.add("nCells", mesh.nCells());\n',
              "case_parallel",
              "restart check: the processor's cell count, so a serial time cannot go on decomposed"),
+    # B120-B121 in what a decomposed run does with the particles that arrive from another
+    # processor (issue 19): caught by case_parallel's runs-of-cells block against the serial
+    # run (B120: the simple cut's particles never return to a rank, and the balance closes)
+    "B120": (M + "submodels/transportModels/frozenFlow/frozenFlow.C",
+             "                coagulationParticle* pPtr = newParticles.remove(&newp);\n"
+             "                cloud_.addParticle(pPtr);\n",
+             "                coagulationParticle* pPtr = newParticles.remove(&newp);\n"
+             "                if (pPtr->origProc() == Pstream::myProcNo())\n"
+             "                {\n"
+             "                    td.bookOutflow(patchi, *pPtr);\n"
+             "                    delete pPtr;\n"
+             "                    continue;\n"
+             "                }\n"
+             "                cloud_.addParticle(pPtr);\n",
+             "case_parallel",
+             "decomposed array transport: a particle handed back to the processor it started on is"
+             " dropped, booked as leaving through the processor patch (the balance closes)"),
+    "B121": (M + "submodels/transportModels/frozenFlow/frozenFlow.C",
+             "                newp.correctAfterParallelTransfer(patchi, td);\n",
+             "                newp.correctAfterParallelTransfer(patchi, td);\n"
+             "                newp.weight() *= 0.999;\n",
+             "case_parallel",
+             "decomposed array transport: an arriving particle's weight 0.1 % low"),
     "B104": (M + "cloudFunctions/momentSampler/momentSampler.C",
              "        const scalar nSteps =\n            std::round((runTime.endTime().value() - runTime.value())/dt);\n",
              "        const label nSteps =\n            std::round((runTime.endTime().value() - runTime.value())/dt);\n",
