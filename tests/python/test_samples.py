@@ -150,3 +150,16 @@ def test_attr_value():
     assert samples.attr_value(np.int64(4)) == 4 and isinstance(samples.attr_value(np.int64(4)), int)
     assert samples.same(1.0, 1.0 + 1e-14) and not samples.same(1.0, 1.0 + 1e-9)
     assert samples.same("SWA", "SWA") and not samples.same("SWA", "DSA1")
+
+
+def test_cell_order_ignores_round_off_of_the_centres():
+    # one column of a 2-D mesh at x = 0.335, its centres' x off by round-off as a decomposed
+    # mesh's are: the rows sort by y, as the serial mesh's do (issue 19: a serial and a
+    # decomposed run of the sheared box had 20 rows in a different order)
+    centres = [(0.335 + 2e-16, 0.095, 0.005), (0.335, 0.005, 0.005),
+               (0.335 - 2e-16, 0.05, 0.005), (0.325, 0.095, 0.005), (0.345, 0.005, 0.005)]
+    assert list(report.cell_order(centres)) == [3, 1, 2, 0, 4]
+    # distinct x still sort first, and one cell or identical centres do not fail
+    assert list(report.cell_order([(0.2, 0, 0), (0.1, 1, 0)])) == [1, 0]
+    assert list(report.cell_order([(1.0, 2.0, 3.0)])) == [0]
+    assert list(report.cell_order([(1.0, 2.0, 3.0)] * 2)) == [0, 1]

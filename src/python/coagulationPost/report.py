@@ -34,6 +34,17 @@ EQ_LABELS = {"constantDuct": ("eq. 39", "eq. 41", "eq. 43", "eq. 45"),
              "additiveDuct": ("moment ODE", "eq. 50", "moment ODE", "moment ODE")}
 
 
+def cell_order(centres):
+    """The rows' order: cells by x, then y, then z, the keys rounded to 1e-9 of the mesh's
+    extent, so that the cells of one column sort by y whatever the round-off of their x (a
+    decomposed mesh's centres differ from the serial mesh's in the last bits; sorted on the raw
+    centres, the rows of a serial and a decomposed run differed in order)."""
+    centres = np.asarray(centres, dtype=float).reshape(-1, 3)
+    span = float(np.ptp(centres, axis=0).max()) if len(centres) else 0.0
+    key = np.round(centres / (1e-9 * span)) if span > 0 else centres
+    return np.lexsort((key[:, 2], key[:, 1], key[:, 0]))
+
+
 def _min_window(ref, x, u, x_inlet, correlation_time):
     """Smallest autocorrelation window (samples) of each cell: correlation_time
     seconds / sampleInterval; correlation_time None: the residence time upstream of
@@ -79,7 +90,7 @@ def compute(cases, t_relax=None, t_end=None, u=None, x_inlet=0.0, analytic_kind=
             data, min_window=_min_window(reader.ref, xs, u, x_inlet, correlation_time))))
     ref = reader.ref
     centres = np.array(reader.cells.centres)
-    order = np.lexsort((centres[:, 2], centres[:, 1], centres[:, 0]))
+    order = cell_order(centres)
     centres = centres[order]
     count = acc.count[order]
     st = statistics.summary(count, acc.mean[order], acc.m2[order])

@@ -9,6 +9,7 @@
 #include "coagulationCloud.H"
 #include "caseChecks.H"
 
+#include <chrono>
 #include <string>
 
 #ifdef _OPENMP
@@ -150,7 +151,18 @@ void Foam::cellStepper::advance
         #endif
         try
         {
-            advanceCell(celli, dt, w, outcomes_[celli]);
+            if (timed_)
+            {
+                using clock = std::chrono::steady_clock;
+                const clock::time_point t0 = clock::now();
+                advanceCell(celli, dt, w, outcomes_[celli]);
+                outcomes_[celli].seconds =
+                    std::chrono::duration<double>(clock::now() - t0).count();
+            }
+            else
+            {
+                advanceCell(celli, dt, w, outcomes_[celli]);
+            }
         }
         catch (const std::exception& e)
         {

@@ -14,6 +14,8 @@
 #include "PstreamBuffers.H"
 #include "addToRunTimeSelectionTable.H"
 
+#include <chrono>
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 namespace Foam
@@ -276,7 +278,11 @@ Foam::label Foam::transportModels::frozenFlow::exchange
     // One reduction decides whether any processor has a particle to hand
     // over; only then the buffers are exchanged (PstreamBuffers' size
     // exchange is a collective of its own)
+    using clock = std::chrono::steady_clock;
+    clock::time_point t0 = clock::now();
     sent = returnReduce(!leaving.empty(), orOp<bool>());
+    transfers_.waitSeconds +=
+        std::chrono::duration<double>(clock::now() - t0).count();
     transfers_.rounds += 1;
     if (!sent)
     {
@@ -318,7 +324,10 @@ Foam::label Foam::transportModels::frozenFlow::exchange
     particleTransferLists.clear();
 
     labelList allNTrans(Pstream::nProcs());
+    t0 = clock::now();
     pBufs.finishedSends(allNTrans);
+    transfers_.waitSeconds +=
+        std::chrono::duration<double>(clock::now() - t0).count();
     for (const label n : allNTrans)
     {
         transfers_.bytes += n;
