@@ -24,5 +24,6 @@
 #include "coagulation/QuantizedSumTree.hpp"
 #include "coagulation/SizeDistribution.hpp"
 #include "coagulation/WorkPartition.hpp"
+#include "coagulation/CostFit.hpp"
 
 #endif
