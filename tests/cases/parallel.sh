@@ -144,6 +144,12 @@ setEntry . system/controlDict endTime 0.3
 setEntry . system/controlDict writeInterval 0.15
 runApplication coagulationFoam
 [ -s 0.3/coagulationWork ] || fail "no 0.3/coagulationWork"
+# cellWork's cost fit (coag::CostFit over the timed cells): an eventCost it measured, finite
+# and positive, at each write
+fit=$(grep "^    eventCost = " log.coagulationFoam | tail -1 | awk '{print $3}')
+awk -v e="${fit:-nan}" 'BEGIN { exit !(e > 0 && e < 100) }' \
+    || fail "cellWork printed no cost fit (eventCost '${fit:-}')"
+echo "cellWork's cost fit on the serial start: eventCost $fit"
 for method in simple weighted; do
     d="$workDir/parallel_work_$method"
     rm -rf "$d"; cp -r "$start" "$d"; cd "$d"

@@ -27,7 +27,8 @@ and the pair rate that accepts against it (issue 19, core tests); B116-B118 in t
 of workDecomposition's runsPerPart (issue 19, core and case tests); B119 in the quantised
 tree's refusal of values that are not finite and >= 0; B120-B121 in the arrivals of a decomposed
 run's particle exchange (issue 19, case_parallel); B122-B123 in the tree's ceiling without
-std::ceil and B124 in the report's order of the cells (issue 19, fifth session). B14-B17 now
+std::ceil and B124 in the report's order of the cells, B125-B126 in the cost fit of cellWork (issue 19,
+fifth session). B14-B17 now
 sit in the coagulationPost package (the campaign measured them in the scripts it came from).
 
     bugs.py list                 id, file, targeted tests, what the bug is
@@ -521,6 +522,16 @@ BUGS = {
              "    return np.lexsort((centres[:, 2], centres[:, 1], centres[:, 0]))\n",
              "python_unit",
              "report: rows sorted on the raw centres (a decomposed run's rows in another order)"),
+    "B125": ("src/coagulationCore/src/CostFit.cpp",
+             "        if (!(pivot >= minPivot)) return r;\n",
+             "",
+             "core.CostFit",
+             "cost fit: no pivot check, so collinear cells give a 'determined' fit of NaN and inf"),
+    "B126": ("src/coagulationCore/src/CostFit.cpp",
+             "        std::max(sumSquares_ - fitted, 0.0) / static_cast<double>(n_ - nTerms);\n",
+             "        std::max(sumSquares_ - fitted, 0.0);\n",
+             "core.CostFit",
+             "cost fit: the residuals' sum of squares for their variance (errors not shrinking with n)"),
     "B122": (TREE,
              "        std::uint64_t r = static_cast<std::uint64_t>(q) + std::uint64_t(static_cast<double>(q) < t);\n",
              "        std::uint64_t r = static_cast<std::uint64_t>(q) + std::uint64_t(static_cast<double>(q) <= t);\n",

@@ -49,12 +49,9 @@ Foam::cloudFunctions::cellWork::cellWork
     sum_(cloud.mesh().nCells(), Zero),
     steps_(0),
     eventCost_(dict.getOrDefault<scalar>("eventCost", 1)),
-    normal_(Zero),
-    rhs_(Zero),
-    sumSquares_(0),
+    fit_(),
     transportSeconds_(0),
     moves_(0),
-    fitted_(0),
     last_(std::chrono::steady_clock::now())
 {
     caseChecks::keywords(dict, {"type", "eventCost"});
@@ -81,18 +78,14 @@ void Foam::cloudFunctions::cellWork::postCellStep()
         sum_[celli] += step.work(celli, eventCost_);
 
         // seconds = a events + b particles + c stepped, least squares
-        const vector x
+        fit_.add
         (
             step.events(celli),
             scalar(step.particles(celli)),
-            step.stepped(celli) ? 1 : 0
+            step.stepped(celli) ? 1 : 0,
+            step.seconds(celli)
         );
-        const scalar t = step.seconds(celli);
-        normal_ += x*x;
-        rhs_ += t*x;
-        sumSquares_ += t*t;
     }
-    fitted_ += sum_.size();
     ++steps_;
     last_ = std::chrono::steady_clock::now();
 
@@ -127,52 +120,45 @@ void Foam::cloudFunctions::cellWork::postStep()
 
 void Foam::cloudFunctions::cellWork::reportFit()
 {
-    // Determined only with events, particles and stepped cells that vary
-    // independently over the cells (det well away from zero)
-    const scalar scale = mag(normal_.xx()*normal_.yy()*normal_.zz());
-    const scalar d = det(normal_);
-    if (moves_ > 0 && fitted_ > 3 && scale > 0 && mag(d) > 1e-9*scale)
+    const coag::CostFit::Result r = fit_.solve();
+    if (r.determined && moves_ > 0)
     {
-        // Least squares: coefficients inv(N) r, their covariance s^2 inv(N)
-        // with s^2 the residuals' variance (sum t^2 - coef . r)/(n - 3)
-        const tensor Ninv = inv(normal_);
-        const vector abc = Ninv & rhs_;
-        const scalar s2 = max(sumSquares_ - (abc & rhs_), scalar(0))/(fitted_ - 3);
-        const tensor cov = s2*Ninv;
-        const scalar m = transportSeconds_/moves_;
-        const scalar p = max(m + abc.y(), VSMALL);
         // eventCost a/p and the visit c/p, p = m + b; first-order errors
-        // with m as measured
-        const scalar e = abc.x()/p;
+        // from the fit's covariance, m as measured
+        const scalar m = transportSeconds_/moves_;
+        const scalar p = max(m + r.coef[1], VSMALL);
+        const scalar e = r.coef[0]/p;
+        const scalar v = r.coef[2]/p;
         const scalar eErr = Foam::sqrt(max
         (
-            cov.xx()/sqr(p) + sqr(e/p)*cov.yy() - 2*e/sqr(p)*cov.xy(),
+            r.cov[0][0]/sqr(p) + sqr(e/p)*r.cov[1][1] - 2*e/sqr(p)*r.cov[0][1],
             scalar(0)
         ));
-        const scalar v = abc.z()/p;
         const scalar vErr = Foam::sqrt(max
         (
-            cov.zz()/sqr(p) + sqr(v/p)*cov.yy() - 2*v/sqr(p)*cov.yz(),
+            r.cov[2][2]/sqr(p) + sqr(v/p)*r.cov[1][1] - 2*v/sqr(p)*r.cov[2][1],
             scalar(0)
         ));
-        Info<< "Cloud function cellWork: cost fit over " << fitted_
-            << " cell steps (this processor): an event " << 1e9*abc.x()
-            << " +- " << 1e9*Foam::sqrt(cov.xx()) << " ns, a particle in the"
-            << " cell step " << 1e9*abc.y() << " +- "
-            << 1e9*Foam::sqrt(cov.yy()) << " ns, a cell's visit "
-            << 1e6*abc.z() << " +- " << 1e6*Foam::sqrt(cov.zz())
+        Info<< "Cloud function cellWork: cost fit over " << label(fit_.count())
+            << " cell steps (this processor): an event " << 1e9*r.coef[0]
+            << " +- " << 1e9*r.stdErr[0] << " ns, a particle in the cell step "
+            << 1e9*r.coef[1] << " +- " << 1e9*r.stdErr[1] << " ns, a cell's"
+            << " visit " << 1e6*r.coef[2] << " +- " << 1e6*r.stdErr[2]
             << " us; a move " << 1e9*m << " ns" << nl
             << "    eventCost = " << e << " +- " << eErr << " (in use "
             << eventCost_ << "), a cell's visit = " << v << " +- " << vErr
-            << " particles (in use " << cellStepper::cellCost << ")"
-            << endl;
+            << " particles (in use " << cellStepper::cellCost << ")" << endl;
     }
-    normal_ = Zero;
-    rhs_ = Zero;
-    sumSquares_ = 0;
+    else
+    {
+        Info<< "Cloud function cellWork: no cost fit over "
+            << label(fit_.count()) << " cell steps (this processor): the"
+            << " cells' events, particles and visits do not vary"
+            << " independently enough, or nothing moved" << endl;
+    }
+    fit_.clear();
     transportSeconds_ = 0;
     moves_ = 0;
-    fitted_ = 0;
 }
 
 
