@@ -2,6 +2,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 #include "coagulation/CostFit.hpp"
 
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+
 #include <algorithm>
 #include <cmath>
 
@@ -29,57 +32,32 @@ void CostFit::clear()
 
 CostFit::Result CostFit::solve() const
 {
+    using Matrix = Eigen::Matrix3d;
+    using Vector = Eigen::Vector3d;
     Result r;
     if (n_ <= nTerms) return r;
-    double d[nTerms];
+    Matrix N;
+    Vector b;
     for (std::size_t i = 0; i < nTerms; ++i) {
-        d[i] = std::sqrt(normal_[i][i]);
-        if (!(d[i] > 0.0) || !std::isfinite(d[i])) return r;
+        for (std::size_t j = 0; j < nTerms; ++j) N(i, j) = normal_[i][j];
+        b(i) = rhs_[i];
     }
-    // Cholesky of the scaled matrix S = L L^T
-    double L[nTerms][nTerms] = {};
-    for (std::size_t j = 0; j < nTerms; ++j) {
-        double pivot = normal_[j][j] / (d[j] * d[j]);
-        for (std::size_t k = 0; k < j; ++k) pivot -= L[j][k] * L[j][k];
-        if (!(pivot >= minPivot)) return r;
-        L[j][j] = std::sqrt(pivot);
-        for (std::size_t i = j + 1; i < nTerms; ++i) {
-            double s = normal_[i][j] / (d[i] * d[j]);
-            for (std::size_t k = 0; k < j; ++k) s -= L[i][k] * L[j][k];
-            L[i][j] = s / L[j][j];
-        }
-    }
-    // S^-1 column by column (L y = e, L^T z = y)
-    double Sinv[nTerms][nTerms];
-    for (std::size_t c = 0; c < nTerms; ++c) {
-        double y[nTerms];
-        for (std::size_t i = 0; i < nTerms; ++i) {
-            double s = i == c ? 1.0 : 0.0;
-            for (std::size_t k = 0; k < i; ++k) s -= L[i][k] * y[k];
-            y[i] = s / L[i][i];
-        }
-        for (std::size_t i = nTerms; i-- > 0;) {
-            double s = y[i];
-            for (std::size_t k = i + 1; k < nTerms; ++k) s -= L[k][i] * Sinv[k][c];
-            Sinv[i][c] = s / L[i][i];
-        }
-    }
-    // N^-1 = D^-1 S^-1 D^-1; coefficients N^-1 rhs
-    double Ninv[nTerms][nTerms];
-    for (std::size_t i = 0; i < nTerms; ++i) {
-        for (std::size_t j = 0; j < nTerms; ++j) Ninv[i][j] = Sinv[i][j] / (d[i] * d[j]);
-    }
-    double fitted = 0.0;  // coef . rhs, the fitted part of sum t^2
-    for (std::size_t i = 0; i < nTerms; ++i) {
-        double c = 0.0;
-        for (std::size_t j = 0; j < nTerms; ++j) c += Ninv[i][j] * rhs_[j];
-        r.coef[i] = c;
-        fitted += c * rhs_[i];
-    }
+    const Vector d = N.diagonal().cwiseSqrt();
+    if (!d.allFinite() || !(d.array() > 0.0).all()) return r;
+    // S = D^-1 N D^-1 (unit diagonal) and its Cholesky factor: the pivots, L_jj^2, are 1 - R^2
+    // of each regressor on the ones before it
+    const auto Dinv = d.cwiseInverse().asDiagonal();
+    const Matrix S = Dinv * N * Dinv;
+    const Eigen::LLT<Matrix> llt(S);
+    const Vector pivots = llt.matrixLLT().diagonal().cwiseAbs2();
+    if (llt.info() != Eigen::Success || !(pivots.array() >= minPivot).all()) return r;
+    const Matrix Ninv = Dinv * llt.solve(Matrix::Identity()) * Dinv;
+    const Vector coef = Ninv * b;
     const double s2 =
-        std::max(sumSquares_ - fitted, 0.0) / static_cast<double>(n_ - nTerms);
+        std::max(sumSquares_ - coef.dot(b), 0.0) / static_cast<double>(n_ - nTerms);
     for (std::size_t i = 0; i < nTerms; ++i) {
-        for (std::size_t j = 0; j < nTerms; ++j) r.cov[i][j] = s2 * Ninv[i][j];
+        r.coef[i] = coef(i);
+        for (std::size_t j = 0; j < nTerms; ++j) r.cov[i][j] = s2 * Ninv(i, j);
         r.stdErr[i] = std::sqrt(std::max(r.cov[i][i], 0.0));
     }
     r.determined = true;

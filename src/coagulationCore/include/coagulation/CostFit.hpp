@@ -13,7 +13,7 @@ namespace coag {
 //  stepped cell), from the normal equations accumulated by add().
 //
 //  solve() scales the normal matrix N to a unit diagonal (S = D^-1 N D^-1, D = sqrt(diag N)),
-//  so that its Cholesky pivots measure how far the regressors are from collinear (a pivot is
+//  so that its Cholesky pivots (Eigen's LLT) measure how far the regressors are from collinear (a pivot is
 //  1 - R^2 of a regressor on the ones before it): a pivot below minPivot, a zero column or
 //  at most 3 observations leave the fit undetermined rather than give numbers the data do not
 //  hold. (On a processor holding three cells of the duct, events and particles moved together
