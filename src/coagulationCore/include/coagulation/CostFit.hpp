@@ -17,8 +17,8 @@ namespace coag {
 //  1 - R^2 of a regressor on the ones before it): a pivot below minPivot, a zero column or
 //  at most 3 observations leave the fit undetermined rather than give numbers the data do not
 //  hold. (On a processor holding three cells of the duct, events and particles moved together
-//  over the steps; the unscaled inverse there had a negative variance on its diagonal, and its
-//  square root stopped a run with a floating-point trap.) The standard errors are
+//  over the steps; a fit through the unscaled inverse stopped that run with a floating-point
+//  trap.) The standard errors are
 //  sqrt(diag(s^2 N^-1)), s^2 the residuals' variance over n - 3 degrees of freedom: the
 //  residuals taken as independent (a machine whose speed drifts between intervals moves the
 //  coefficients more than that).
