@@ -144,12 +144,16 @@ setEntry . system/controlDict endTime 0.3
 setEntry . system/controlDict writeInterval 0.15
 runApplication coagulationFoam
 [ -s 0.3/coagulationWork ] || fail "no 0.3/coagulationWork"
-# cellWork's cost fit (coag::CostFit over the timed cells): an eventCost it measured, finite
-# and positive, at each write
-fit=$(grep "^    eventCost = " log.coagulationFoam | tail -1 | awk '{print $3}')
-awk -v e="${fit:-nan}" 'BEGIN { exit !(e > 0 && e < 100) }' \
-    || fail "cellWork printed no cost fit (eventCost '${fit:-}')"
-echo "cellWork's cost fit on the serial start: eventCost $fit"
+# cellWork's cost fit (coag::CostFit over the timed cells): a line at each of the 2 writes,
+# eventCost and its error finite numbers (the value itself follows the machine's load: on a
+# clean clone under ctest -j2 one interval gave -0.39 +- 0.45, the other 0.74 +- 0.07)
+fits=$(grep -c "^Cloud function cellWork: \(no \)\?cost fit" log.coagulationFoam || true)
+[ "$fits" = 2 ] || fail "cellWork printed $fits cost fit lines, 2 writes"
+grep "^    eventCost = " log.coagulationFoam | awk '
+    { n++; if ($3 !~ /^-?[0-9.]+(e[-+]?[0-9]+)?$/ || $5 !~ /^[0-9.]+(e[-+]?[0-9]+)?$/) bad++ }
+    END { exit !(n > 0 && bad == 0) }' \
+    || fail "cellWork's cost fit: no eventCost, or one that is not a finite number"
+echo "cellWork's cost fit on the serial start: $(grep "^    eventCost = " log.coagulationFoam | awk '{printf "%s%s +- %s", (NR > 1 ? ", " : ""), $3, $5}')"
 for method in simple weighted; do
     d="$workDir/parallel_work_$method"
     rm -rf "$d"; cp -r "$start" "$d"; cd "$d"
