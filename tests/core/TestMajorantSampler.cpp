@@ -103,6 +103,68 @@ TEST(MajorantSampler, PairRatesSumToTheRateSumAndMajoriseTheKernel)
     }
 }
 
+//- pairRateAt(j1, p1, j2, p2), which reads the tree's leaves, is pairRate(p1, p2), which
+//  quantises the particles' values afresh, bit for bit: after the build, after changes in
+//  place, after coarsenings (a particle a million times heavier than the column's largest),
+//  after appends that grow the tree (fewer bits a leaf: every column coarsened) and after
+//  removals by swap; for every kernel shape and both weightings.
+TEST(MajorantSampler, PairRateFromTheLeavesIsThePairRateFromTheParticles)
+{
+    for (const char* name : {"additive", "multiplicative", "saffmanTurner", "constant"}) {
+        for (bool weighted : {true, false}) {
+            auto kernel = makeKernel(name, 1.5);
+            std::vector<Particle> P;
+            for (int j = 0; j < 20; ++j) {
+                P.push_back(Particle{ParticleType{1.0 + 0.37 * j}, 0.5 + 0.11 * (j % 7), j});
+            }
+            MajorantSampler sampler(weighted);
+            sampler.configure(*kernel, "test");
+            sampler.build(P, P.size());
+            Rng rng(7);
+            std::size_t compared = 0;
+            auto compare = [&](const char* after) {
+                const std::size_t n = P.size();
+                sampler.rateSum(n);
+                for (int k = 0; k < 25; ++k) {
+                    const std::size_t a = rng.uniformIndex(n), b = rng.uniformIndex(n);
+                    ASSERT_EQ(sampler.pairRateAt(a, P[a], b, P[b]), sampler.pairRate(P[a], P[b]))
+                        << name << (weighted ? " weighted" : "") << " after " << after;
+                    ++compared;
+                }
+            };
+            compare("the build");
+            for (int s = 0; s < 300; ++s) {
+                const std::size_t n = P.size();
+                const double r = rng.uniform();
+                if (r < 0.6) {
+                    const std::size_t a = rng.uniformIndex(n), b = rng.uniformIndex(n);
+                    const double m1 = P[a].type.mass, m2 = P[b].type.mass;
+                    P[a].type.mass = m1 + m2;
+                    P[a].weight *= m1 / (m1 + m2);
+                    sampler.set(P[a], a);
+                    compare("a change");
+                } else if (r < 0.65) {
+                    const std::size_t a = rng.uniformIndex(n);
+                    P[a].type.mass *= 1e6;  // past the column's headroom: coarsened
+                    sampler.set(P[a], a);
+                    compare("a coarsening");
+                } else if (r < 0.85) {
+                    P.push_back(Particle{ParticleType{0.5 + rng.uniform()}, rng.uniform(), -1});
+                    sampler.append(P.back(), P.size() - 1);
+                    compare("an append");
+                } else if (n > 10) {
+                    const std::size_t k = rng.uniformIndex(n);
+                    sampler.removeBySwap(k, n - 1);
+                    P[k] = P[n - 1];
+                    P.pop_back();
+                    compare("a removal");
+                }
+            }
+            EXPECT_GT(compared, 5000u);
+        }
+    }
+}
+
 //- The store is chosen by the capacity at build()
 TEST(MajorantSampler, ChoosesTheBinsFromBinnedFrom)
 {

@@ -81,8 +81,8 @@ private:
 
     //- The acceptance of a proposed pair: K (w2) over its proposal rate (MajorantSampler::
     //  pairRate, Khat (w2) from the tree's integer majorants); a K above its majorant throws
-    bool accepted(const Particle& p1, const Particle& p2, const CoagulationKernel& kernel,
-                  Rng& rng);
+    bool accepted(std::size_t j1, const Particle& p1, std::size_t j2, const Particle& p2,
+                  const CoagulationKernel& kernel, Rng& rng);
 
     Jump jump_;
     InceptionModel inception_;
@@ -166,12 +166,12 @@ void JumpProcess<Jump>::checkRate(double totalRate, double remaining, const Cell
 }
 
 template <class Jump>
-bool JumpProcess<Jump>::accepted(const Particle& p1, const Particle& p2,
-                                 const CoagulationKernel& kernel, Rng& rng)
+bool JumpProcess<Jump>::accepted(std::size_t j1, const Particle& p1, std::size_t j2,
+                                 const Particle& p2, const CoagulationKernel& kernel, Rng& rng)
 {
     // The pair was proposed at the sampler's rate (a majorant); its jump rate is K (w2):
     // accepted with their ratio (thinning)
-    const double proposed = sampler_.pairRate(p1, p2);
+    const double proposed = sampler_.pairRateAt(j1, p1, j2, p2);
     const double K = kernel(p1.type, p2.type);
     const double target = sampler_.targetRate(K, p2);
     if (target < proposed) return rng.uniform() * proposed < target;
@@ -246,7 +246,7 @@ void JumpProcess<Jump>::advance(CellPopulation& pop, const CoagulationKernel& ke
         std::size_t j1 = 0;
         std::size_t j2 = 0;
         sampler_.propose((u - inceptionRate) / scale, n, rng, P.data(), j1, j2);
-        if (j1 == j2 || j1 >= n || j2 >= n || !accepted(P[j1], P[j2], kernel, rng)) {
+        if (j1 == j2 || j1 >= n || j2 >= n || !accepted(j1, P[j1], j2, P[j2], kernel, rng)) {
             ++stats.fictitious;
             continue;
         }

@@ -28,7 +28,7 @@ of workDecomposition's runsPerPart (issue 19, core and case tests); B119 in the 
 tree's refusal of values that are not finite and >= 0; B120-B121 in the arrivals of a decomposed
 run's particle exchange (issue 19, case_parallel); B122-B123 in the tree's ceiling without
 std::ceil and B124 in the report's order of the cells, B125-B126 in the cost fit of cellWork (issue 19,
-fifth session). B14-B17 now
+fifth session); B127 in the pair rate read from the tree's leaves (issue 19, sixth session). B14-B17 now
 sit in the coagulationPost package (the campaign measured them in the scripts it came from).
 
     bugs.py list                 id, file, targeted tests, what the bug is
@@ -542,6 +542,11 @@ BUGS = {
              "",
              SAMPLERTESTS,
              "quantised tree: a positive value whose quotient underflows to 0 gets no unit (never drawn)"),
+    "B127": (PROPOSE,
+             "                   * leafValue(columns_[termSecond_[k]], j2);\n",
+             "                   * leafValue(columns_[termSecond_[k]], j1);\n",
+             SAMPLERTESTS,
+             "pair rate from the leaves: the second factor read at the first particle's leaf"),
     "B111": (TREECPP,
              "    for (std::size_t c = 0; c < ncol_; ++c) delta[c] = 0 - leaf(from, c);\n    addToPath<0>(from, delta);\n",
              "",

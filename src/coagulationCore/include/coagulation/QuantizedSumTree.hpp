@@ -241,6 +241,12 @@ private:
             for (std::size_t b = 0; b < fanOut * leafBytes; b += 64) {
                 __builtin_prefetch(reinterpret_cast<const void*>(first + b));
             }
+            // and the leaf block's other columns, which the caller's acceptance reads
+            // (MajorantSampler::pairRateAt)
+            const std::uint64_t* block = base_ + node * blockSize_;
+            for (std::size_t k = 0; k < ncol_; ++k) {
+                if (k != c) __builtin_prefetch(block + k * fanOut);
+            }
         }
 #endif
         const std::uint64_t* v = base_ + levelOffset_[l] + node * blockSize_ + c * fanOut;
