@@ -123,20 +123,34 @@ void QuantizedSumTree::coarsen(std::size_t c, int k)
 
 void QuantizedSumTree::finishBuild(std::size_t n)
 {
+    // Leaf j of column c is word j % 8 of that column's line in block j / 8: the leaves are
+    // read block by block, in the order of j (so the first bad value is the one reported),
+    // with no index arithmetic per leaf
+    const std::size_t fullBlocks = n / fanOut;
+    const std::size_t tail = n % fanOut;
     for (std::size_t c = 0; c < ncol_; ++c) {
+        std::uint64_t* const leaves = base_ + c * fanOut;
         double largest = 0.0;
-        for (std::size_t j = 0; j < n; ++j) {
-            double v;
-            std::memcpy(&v, &base_[leafIndex(j, c)], sizeof v);
-            if (!(v >= 0.0) || !std::isfinite(v)) throwBadValue(c, v);
-            largest = std::max(largest, v);
-        }
+        auto scan = [&](const std::uint64_t* q, std::size_t m) {
+            for (std::size_t s = 0; s < m; ++s) {
+                double v;
+                std::memcpy(&v, q + s, sizeof v);
+                if (!(v >= 0.0) || !std::isfinite(v)) throwBadValue(c, v);
+                largest = std::max(largest, v);
+            }
+        };
+        for (std::size_t b = 0; b < fullBlocks; ++b) scan(leaves + b * blockSize_, fanOut);
+        scan(leaves + fullBlocks * blockSize_, tail);
         setExponent(c, exponentFor(largest));
-        for (std::size_t j = 0; j < n; ++j) {
-            double v;
-            std::memcpy(&v, &base_[leafIndex(j, c)], sizeof v);
-            base_[leafIndex(j, c)] = quantise(c, v);
-        }
+        auto quantiseLeaves = [&](std::uint64_t* q, std::size_t m) {
+            for (std::size_t s = 0; s < m; ++s) {
+                double v;
+                std::memcpy(&v, q + s, sizeof v);
+                q[s] = quantise(c, v);
+            }
+        };
+        for (std::size_t b = 0; b < fullBlocks; ++b) quantiseLeaves(leaves + b * blockSize_, fanOut);
+        quantiseLeaves(leaves + fullBlocks * blockSize_, tail);
     }
     rebuild();
 }
