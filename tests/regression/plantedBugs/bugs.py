@@ -28,7 +28,7 @@ of workDecomposition's runsPerPart (issue 19, core and case tests); B119 in the 
 tree's refusal of values that are not finite and >= 0; B120-B121 in the arrivals of a decomposed
 run's particle exchange (issue 19, case_parallel); B122-B123 in the tree's ceiling without
 std::ceil and B124 in the report's order of the cells, B125-B126 in the cost fit of cellWork (issue 19,
-fifth session); B127 in the pair rate read from the tree's leaves (issue 19, sixth session). B14-B17 now
+fifth session); B127 in the pair rate read from the tree's leaves and B128-B129 in the tree's build block by block (issue 19, sixth session). B14-B17 now
 sit in the coagulationPost package (the campaign measured them in the scripts it came from).
 
     bugs.py list                 id, file, targeted tests, what the bug is
@@ -547,6 +547,16 @@ BUGS = {
              "                   * leafValue(columns_[termSecond_[k]], j1);\n",
              SAMPLERTESTS,
              "pair rate from the leaves: the second factor read at the first particle's leaf"),
+    "B128": (TREECPP,
+             "        quantiseLeaves(leaves + fullBlocks * blockSize_, tail);\n",
+             "",
+             SAMPLERTESTS,
+             "quantised tree: the build leaves the last partial block of leaves unquantised (raw double bits as integers)"),
+    "B129": (TREECPP,
+             "        scan(leaves + fullBlocks * blockSize_, tail);\n",
+             "",
+             SAMPLERTESTS,
+             "quantised tree: the build takes the scale without the last partial block's values (and lets their NaNs through)"),
     "B111": (TREECPP,
              "    for (std::size_t c = 0; c < ncol_; ++c) delta[c] = 0 - leaf(from, c);\n    addToPath<0>(from, delta);\n",
              "",
