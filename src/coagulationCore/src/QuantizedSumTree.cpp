@@ -140,7 +140,7 @@ void QuantizedSumTree::finishBuild(std::size_t n)
             }
         };
         for (std::size_t b = 0; b < fullBlocks; ++b) scan(leaves + b * blockSize_, fanOut);
-        scan(leaves + fullBlocks * blockSize_, tail);
+        if (tail > 0) scan(leaves + fullBlocks * blockSize_, tail);
         setExponent(c, exponentFor(largest));
         auto quantiseLeaves = [&](std::uint64_t* q, std::size_t m) {
             for (std::size_t s = 0; s < m; ++s) {
@@ -150,7 +150,7 @@ void QuantizedSumTree::finishBuild(std::size_t n)
             }
         };
         for (std::size_t b = 0; b < fullBlocks; ++b) quantiseLeaves(leaves + b * blockSize_, fanOut);
-        quantiseLeaves(leaves + fullBlocks * blockSize_, tail);
+        if (tail > 0) quantiseLeaves(leaves + fullBlocks * blockSize_, tail);
     }
     rebuild();
 }
