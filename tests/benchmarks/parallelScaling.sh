@@ -157,13 +157,16 @@ done
 if [ "${SAMPLE:-0}" = 1 ]; then
     echo "per-cell time averages against the 1x1 run of the same round (largest |z| per moment):"
     "$COAGULATIONFOAM_PYTHON" - "$out" "$rounds" ${CONFIGS:-1x1 2x1work 1x2 2x1simple 2x1cloudMove} <<'PY' | tee "$out/statistics.txt"
+import os
 import sys
 import numpy as np
+sys.path.insert(0, os.path.join(os.environ["COAGULATIONFOAM_DIR"], "src", "python"))
+from coagulationPost import report
 out, rounds, configs = sys.argv[1], int(sys.argv[2]), sys.argv[3:]
 def load(c, r):
-    # the cells in one order, by their centres (moments_full.csv has x, y and z)
+    # the cells in the report's order, by their centres (moments_full.csv has x, y and z)
     d = np.genfromtxt("%s/%s_%d/results/moments_full.csv" % (out, c, r), delimiter=",", names=True)
-    return d[np.lexsort((np.round(d["z"], 9), np.round(d["y"], 9), np.round(d["x"], 9)))]
+    return d[report.cell_order(np.column_stack((d["x"], d["y"], d["z"])))]
 allz = {}
 for r in range(1, rounds + 1):
     ref = load("1x1", r)
