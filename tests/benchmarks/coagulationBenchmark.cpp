@@ -14,6 +14,9 @@
 //
 // Usage: coagulationBenchmark [minEventsPerCase (default 3e6)] [maxN (default 1e6)] [repeats (default 3)]
 //                             [algorithm (SWA, DSA1 or all)] [kernel (additive, constant or all)]
+//                             [sizes: N,N,... (default 1e3,1e4,1e5,1e6), those up to maxN]
+// COAGULATION_LOOKAHEAD=0 in the environment switches the event loop's draws made ahead off
+// (CellAlgorithm::setLookahead; the same events, so a same-binary comparison of their cost).
 #include "coagulation/coagulation.hpp"
 
 #include <algorithm>
@@ -49,6 +52,8 @@ Result runBlock(const std::string& algName, const std::string& kernelName, std::
 {
     auto kernel = makeKernel(kernelName, 1.0);
     auto alg = makeCellAlgorithm(algName, *kernel, InceptionModel{});
+    const char* lookahead = std::getenv("COAGULATION_LOOKAHEAD");
+    alg->setLookahead(!(lookahead && std::string(lookahead) == "0"));
     const bool dsa = algName != "SWA";
     // physical time per window (K0 = 1, density 1)
     const double window = dsa ? (kernelName == "additive" ? 0.2 : 0.5)
@@ -139,6 +144,21 @@ int main(int argc, char** argv)
     const int repeats = static_cast<int>(positiveArgument(argc, argv, 3, 3));
     const std::string onlyAlg = argc > 4 ? argv[4] : "all";
     const std::string onlyKernel = argc > 5 ? argv[5] : "all";
+    std::vector<double> sizes{1e3, 1e4, 1e5, 1e6};
+    if (argc > 6) {
+        sizes.clear();
+        for (const char* p = argv[6]; *p != '\0';) {
+            char* end = nullptr;
+            const double N = std::strtod(p, &end);
+            if (end == p || !(N >= 2.0 && N <= 1e9) || (*end != ',' && *end != '\0')) {
+                std::fprintf(stderr, "coagulationBenchmark: sizes '%s' is not a list N,N,... "
+                                     "of particle numbers from 2 to 1e9\n", argv[6]);
+                return 1;
+            }
+            sizes.push_back(N);
+            p = *end == ',' ? end + 1 : end;
+        }
+    }
     for (const auto& [given, allowed] :
          {std::pair<std::string, std::vector<std::string>>{onlyAlg, {"SWA", "DSA1", "all"}},
           {onlyKernel, {"additive", "constant", "all"}}}) {
@@ -159,7 +179,7 @@ int main(int argc, char** argv)
         if (onlyAlg != "all" && alg != onlyAlg) continue;
         for (const std::string kernel : {"additive", "constant"}) {
             if (onlyKernel != "all" && kernel != onlyKernel) continue;
-            for (double N : {1e3, 1e4, 1e5, 1e6}) {
+            for (double N : sizes) {
                 if (N > maxN) continue;
                 const Summary r =
                     run(alg, kernel, static_cast<std::size_t>(N), minEvents, repeats);

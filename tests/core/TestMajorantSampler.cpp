@@ -165,6 +165,71 @@ TEST(MajorantSampler, PairRateFromTheLeavesIsThePairRateFromTheParticles)
     }
 }
 
+//- proposeAhead() after lookAhead() proposes exactly the pairs propose() does, along a
+//  population that changes between the two calls as SWA's does (one set()) and otherwise
+//  (coarsenings, appends, removals by swap): two samplers on the same particles and random
+//  streams, one looking ahead with the stream's next words, for 4 kernels (SWA's weighted
+//  second factors). A bigger tree than the rest of this file (400 particles, 3 levels),
+//  so that the draws made ahead have walks to save.
+TEST(MajorantSampler, ProposalsDrawnAheadAreTheProposals)
+{
+    for (const char* name : {"additive", "multiplicative", "saffmanTurner", "constant"}) {
+        auto kernel = makeKernel(name, 1.5);
+        std::vector<Particle> P;
+        for (int j = 0; j < 400; ++j) {
+            P.push_back(Particle{ParticleType{1.0 + 0.37 * (j % 50)}, 0.5 + 0.11 * (j % 7), j});
+        }
+        MajorantSampler plain(true), ahead(true);
+        plain.configure(*kernel, "test");
+        ahead.configure(*kernel, "test");
+        plain.build(P, P.size());
+        ahead.build(P, P.size());
+        Rng rngPlain(11), rngAhead(11), changes(5);
+        std::size_t compared = 0;
+        for (int s = 0; s < 6000; ++s) {
+            const std::size_t n = P.size();
+            const double sum = plain.rateSum(n);
+            ASSERT_EQ(ahead.rateSum(n), sum);
+            const double u = rngPlain.uniform() * sum;
+            ASSERT_EQ(rngAhead.uniform() * sum, u);
+            std::size_t a1 = 0, a2 = 0, b1 = 0, b2 = 0;
+            plain.propose(u, n, rngPlain, P.data(), a1, a2);
+            ahead.proposeAhead(u, n, rngAhead, P.data(), b1, b2);
+            ASSERT_EQ(a1, b1) << name << " proposal " << s;
+            ASSERT_EQ(a2, b2) << name << " proposal " << s;
+            ++compared;
+            // the next proposal drawn ahead, before this one's change
+            Rng::Engine peek = rngAhead.engine();
+            ahead.lookAhead(Rng::toUniform(peek()) * sum, n, peek, P.data());
+            const double r = changes.uniform();
+            if (r < 0.7) {
+                if (a1 == a2) continue;
+                const double m1 = P[a1].type.mass, m2 = P[a2].type.mass;  // eq 21
+                P[a1].type.mass = m1 + m2;
+                P[a1].weight *= m1 / (m1 + m2);
+                plain.set(P[a1], a1);
+                ahead.set(P[a1], a1);
+            } else if (r < 0.72) {
+                const std::size_t a = changes.uniformIndex(n);
+                P[a].type.mass *= 1e6;  // past the column's headroom: coarsened
+                plain.set(P[a], a);
+                ahead.set(P[a], a);
+            } else if (r < 0.86) {
+                P.push_back(Particle{ParticleType{0.5 + changes.uniform()}, changes.uniform(), -1});
+                plain.append(P.back(), P.size() - 1);
+                ahead.append(P.back(), P.size() - 1);
+            } else if (n > 200) {
+                const std::size_t k = changes.uniformIndex(n);
+                plain.removeBySwap(k, n - 1);
+                ahead.removeBySwap(k, n - 1);
+                P[k] = P[n - 1];
+                P.pop_back();
+            }
+        }
+        EXPECT_EQ(compared, 6000u);
+    }
+}
+
 //- The store is chosen by the capacity at build()
 TEST(MajorantSampler, ChoosesTheBinsFromBinnedFrom)
 {

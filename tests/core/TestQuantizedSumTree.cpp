@@ -3,6 +3,7 @@
 
 #include <limits>
 #include <numeric>
+#include <tuple>
 
 using namespace coagtest;
 
@@ -156,6 +157,110 @@ TEST(QuantizedSumTree, EachLeafOwnsExactlyItsRangeOfDraws)
             }
             ASSERT_EQ(prefix, tree.totalInteger(c));
         }
+    }
+}
+
+//- A draw made ahead (walk, walkPair) and taken later by drawNear() is the walk's draw for
+//  the later integer, after no change or one assign() (of a leaf before, at or after the
+//  drawn one, to a larger, smaller or zero value): drawNear either declines or gives
+//  sample(c, u) exactly, for integers near and far from the predicted one; it takes most of
+//  the near ones; and it declines after two changes, a removal by swap and a coarsening.
+//  The Draw's interval holds its integer.
+TEST(QuantizedSumTree, DrawsMadeAheadAreTheWalksDrawsOrDeclined)
+{
+    for (const std::size_t n : {std::size_t(5), std::size_t(300), std::size_t(20000)}) {
+        QuantizedSumTree tree;
+        tree.reset(3, n);
+        Rng rng(31 + n);
+        std::vector<double> v(3 * n);
+        for (std::size_t j = 0; j < n; ++j) {
+            for (std::size_t c = 0; c < 3; ++c) {
+                v[3 * j + c] = (j + c) % 5 == 1 ? 0.0 : rng.exponential(1.0);
+                tree.stage(j, c, v[3 * j + c]);
+            }
+        }
+        tree.finishBuild(n);
+        std::vector<double> leafData(tree.capacity());
+        std::size_t tried = 0, taken = 0, nearTried = 0, nearTaken = 0;
+        for (int round = 0; round < 400; ++round) {
+            for (std::size_t c = 0; c < 3; ++c) {
+                if (tree.totalInteger(c) == 0) {  // zeroed below: refill one leaf
+                    double values[3] = {v[0], v[1], v[2]};
+                    values[c] = 1.0;
+                    tree.assign(0, values);
+                    v[c] = 1.0;
+                }
+            }
+            const std::size_t c1 = rng.uniformIndex(3), c2 = rng.uniformIndex(3);
+            const std::uint64_t p1 = rng.uniformIndex(tree.totalInteger(c1));
+            const std::uint64_t p2 = rng.uniformIndex(tree.totalInteger(c2));
+            QuantizedSumTree::Draw d1, d2, d3;
+            tree.walkPair(c1, p1, c2, p2, leafData.data(), sizeof(double), d1, d2);
+            tree.walk(c1, p1, leafData.data(), sizeof(double), d3);
+            ASSERT_EQ(d1.leaf, tree.sample(c1, p1));
+            ASSERT_EQ(d2.leaf, tree.sample(c2, p2));
+            ASSERT_EQ(d3.leaf, d1.leaf);
+            ASSERT_EQ(d3.start, d1.start);
+            ASSERT_LE(d1.start, p1);
+            ASSERT_LT(p1 - d1.start, tree.leaf(d1.leaf, c1));
+            // no change, or one change of a leaf near the drawn one or anywhere
+            const int kind = round % 4;
+            if (kind > 0) {
+                std::size_t j = kind == 1 ? rng.uniformIndex(n)
+                                          : std::min(n - 1, d1.leaf + rng.uniformIndex(3) - 1
+                                                                + (d1.leaf == 0 ? 1 : 0));
+                const double factor = kind == 3 ? 0.0 : 0.25 + 3.0 * rng.uniform();
+                double values[3];
+                for (std::size_t c = 0; c < 3; ++c) values[c] = v[3 * j + c] * factor;
+                tree.assign(j, values);
+                for (std::size_t c = 0; c < 3; ++c) v[3 * j + c] = values[c];
+            }
+            for (const auto& [c, d, p] : {std::tuple{c1, d1, p1}, std::tuple{c2, d2, p2}}) {
+                if (tree.totalInteger(c) == 0) continue;
+                for (int k = 0; k < 12; ++k) {
+                    const std::uint64_t total = tree.totalInteger(c);
+                    // a quarter of a mean interval, three intervals, anywhere
+                    const std::uint64_t spread = k < 6   ? total / (4 * n) + 2
+                                                 : k < 9 ? 3 * (total / n) + 2
+                                                         : total;
+                    const std::uint64_t offset = rng.uniformIndex(2 * spread);
+                    std::uint64_t u = p + offset >= spread ? p + offset - spread : 0;
+                    if (u >= total) u = total - 1;
+                    std::size_t j = n + 7;
+                    const bool ok = tree.drawNear(c, d, u, j);
+                    ++tried;
+                    if (k < 6) ++nearTried;
+                    if (ok) {
+                        ASSERT_EQ(j, tree.sample(c, u)) << n << " round " << round;
+                        ++taken;
+                        if (k < 6) ++nearTaken;
+                    } else {
+                        ASSERT_EQ(j, n + 7);
+                    }
+                }
+            }
+        }
+        EXPECT_GT(nearTaken, nearTried * 9 / 10) << n;
+        EXPECT_GT(taken, 0u);
+        // after two changes, a removal by swap or a coarsening: declined
+        const std::uint64_t p = rng.uniformIndex(tree.totalInteger(0));
+        QuantizedSumTree::Draw d;
+        tree.walk(0, p, leafData.data(), sizeof(double), d);
+        std::size_t j = 0;
+        ASSERT_TRUE(tree.drawNear(0, d, p, j));
+        double values[3] = {1.0, 1.0, 1.0};
+        tree.assign(0, values);
+        tree.assign(n - 1, values);
+        EXPECT_FALSE(tree.drawNear(0, d, p, j));
+        tree.walk(0, p, leafData.data(), sizeof(double), d);
+        if (n > 1) {
+            tree.moveLeaf(n - 1, 0);
+            EXPECT_FALSE(tree.drawNear(0, d, p, j));
+        }
+        tree.walk(0, rng.uniformIndex(tree.totalInteger(0)), leafData.data(), sizeof(double), d);
+        const double huge[3] = {1e30, 1.0, 1.0};  // past the column's headroom: coarsened
+        tree.assign(n / 2, huge);
+        EXPECT_FALSE(tree.drawNear(0, d, p, j));
     }
 }
 

@@ -24,6 +24,7 @@ template <class Rule>
 struct DsaJump {
     static constexpr const char* name = Rule::name;
     static constexpr bool equalWeights = true;
+    static constexpr bool lookahead = false;  // the removal of j2 by swap changes two leaves more
 
     //- Eq 11: (x1, z1), (x2, z2) -> (x~, z1 + z2), x~ = x1 with probability p, else x2
     //  (eq 14; the place is the particle's slot and tag). The other one is removed by moving

@@ -9,6 +9,10 @@
 //   static constexpr const char* name;      "SWA", "DSA1", "DSA2"
 //   static constexpr bool equalWeights;     DSA: all weights equal (pulled out of the sums,
 //                                           halving halves the volume, closed-cell doubling)
+//   static constexpr bool lookahead;        whether the event loop may draw the next proposal
+//                                           ahead (MajorantSampler::lookAhead): for a jump
+//                                           that changes the sampler by one set() (SWA); a
+//                                           removal by swap (DSA) leaves such draws unusable
 //   void coagulate(pop, j1, j2, rng, sampler)   the accepted jump on the pair (j1, j2),
 //                                           keeping the sampler's leaves in step
 
@@ -44,6 +48,8 @@ public:
 
     std::size_t workspaceBytes() const override { return sampler_.memoryBytes(); }
 
+    void setLookahead(bool on) override { lookahead_ = on; }
+
 private:
     //- DSA's doubling applies in closed cells only (see NumberControl.hpp)
     bool closedControl(double inceptionRate) const
@@ -76,8 +82,22 @@ private:
     std::size_t expectedCapacity(const CellPopulation& pop, double inceptionRate,
                                  double dt) const;
 
-    //- A finite rate, and not more than maxExpectedEvents in the rest of the step
-    static void checkRate(double totalRate, double remaining, const CellPopulation& pop);
+    //- A finite rate, and not more than maxExpectedEvents in the rest of the step (else
+    //  badRate's std::runtime_error)
+    static void checkRate(double totalRate, double remaining, const CellPopulation& pop)
+    {
+        if (!std::isfinite(totalRate) || totalRate * remaining > maxExpectedEvents) {
+            badRate(totalRate, remaining, pop);
+        }
+    }
+    [[noreturn]] static void badRate(double totalRate, double remaining,
+                                     const CellPopulation& pop);
+
+    //- The events of one step from t = 0 to dt, the sampler built; with Ahead, each event
+    //  proposes through draws made ahead during the event before it
+    template<bool Ahead>
+    void events(CellPopulation& pop, const CoagulationKernel& kernel, double inceptionRate,
+                double w, double dt, Rng& rng, StepStatistics& stats);
 
     //- The acceptance of a proposed pair: K (w2) over its proposal rate (MajorantSampler::
     //  pairRate, Khat (w2) from the tree's integer majorants); a K above its majorant throws
@@ -88,6 +108,7 @@ private:
     InceptionModel inception_;
     NumberControl control_;
     MajorantSampler sampler_;
+    bool lookahead_ = true;
 };
 
 template <class Jump>
@@ -149,20 +170,18 @@ std::size_t JumpProcess<Jump>::expectedCapacity(const CellPopulation& pop, doubl
 }
 
 template <class Jump>
-void JumpProcess<Jump>::checkRate(double totalRate, double remaining, const CellPopulation& pop)
+void JumpProcess<Jump>::badRate(double totalRate, double remaining, const CellPopulation& pop)
 {
     if (!std::isfinite(totalRate)) {
         throw std::runtime_error(who() + ": total event rate is not finite (gelation?)");
     }
-    if (totalRate * remaining > maxExpectedEvents) {
-        std::ostringstream os;
-        os << who() << ": " << totalRate * remaining
-           << " events expected in the rest of the step (limit " << maxExpectedEvents << ", "
-           << pop.particles.size() << " particles, volume " << pop.volume
-           << "): the kernel or inception rate is far too large for the step, or the "
-              "population is past gelation";
-        throw std::runtime_error(os.str());
-    }
+    std::ostringstream os;
+    os << who() << ": " << totalRate * remaining
+       << " events expected in the rest of the step (limit " << maxExpectedEvents << ", "
+       << pop.particles.size() << " particles, volume " << pop.volume
+       << "): the kernel or inception rate is far too large for the step, or the "
+          "population is past gelation";
+    throw std::runtime_error(os.str());
 }
 
 template <class Jump>
@@ -210,6 +229,20 @@ void JumpProcess<Jump>::advance(CellPopulation& pop, const CoagulationKernel& ke
     P.reserve(capacity);
     sampler_.build(P, capacity);
 
+    if (Jump::lookahead && lookahead_ && sampler_.lookaheadPays()) {
+        events<true>(pop, kernel, inceptionRate, w, dt, rng, stats);
+    } else {
+        events<false>(pop, kernel, inceptionRate, w, dt, rng, stats);
+    }
+}
+
+template <class Jump>
+template <bool Ahead>
+void JumpProcess<Jump>::events(CellPopulation& pop, const CoagulationKernel& kernel,
+                               double inceptionRate, double w, double dt, Rng& rng,
+                               StepStatistics& stats)
+{
+    std::vector<Particle>& P = pop.particles;
     // Pair rates summed over ordered pairs: SWA K w2 / V (eq 22; w2 inside the sampler's
     // second factors), DSA K w / (2V) (each unordered pair at K w / V, eqs 12, 16-17).
     const double pairFactor = Jump::equalWeights ? 0.5 * w : 1.0;
@@ -245,8 +278,25 @@ void JumpProcess<Jump>::advance(CellPopulation& pop, const CoagulationKernel& ke
         //      (j1 == j2 and rejections are fictitious jumps)
         std::size_t j1 = 0;
         std::size_t j2 = 0;
-        sampler_.propose((u - inceptionRate) / scale, n, rng, P.data(), j1, j2);
-        if (j1 == j2 || j1 >= n || j2 >= n || !accepted(j1, P[j1], j2, P[j2], kernel, rng)) {
+        if (Ahead) {
+            sampler_.proposeAhead((u - inceptionRate) / scale, n, rng, P.data(), j1, j2);
+        } else {
+            sampler_.propose((u - inceptionRate) / scale, n, rng, P.data(), j1, j2);
+        }
+        const bool real =
+            j1 != j2 && j1 < n && j2 < n && accepted(j1, P[j1], j2, P[j2], kernel, rng);
+        if (Ahead) {
+            // The next proposal, from the engine's next words (a waiting time, a uniform, the
+            // walks' integers) and this event's rates, walks the tree now: its cache misses
+            // overlap this event's change. proposeAhead() keeps only what is exact.
+            Rng::Engine peek = rng.engine();
+            peek();
+            const double uNext = Rng::toUniform(peek()) * totalRate;
+            if (uNext >= inceptionRate) {
+                sampler_.lookAhead((uNext - inceptionRate) / scale, n, peek, P.data());
+            }
+        }
+        if (!real) {
             ++stats.fictitious;
             continue;
         }

@@ -21,6 +21,7 @@ void QuantizedSumTree::reset(std::size_t nColumns, std::size_t capacity)
                                     + " columns, at most " + std::to_string(maxColumns));
     }
     ncol_ = nColumns;
+    version_ += 2;
     blockSize_ = ncol_ * fanOut;
     const std::size_t nodes0 = std::max<std::size_t>(1, (capacity + fanOut - 1) / fanOut);
     capacity_ = nodes0 * fanOut;
@@ -157,6 +158,7 @@ void QuantizedSumTree::finishBuild(std::size_t n)
 
 void QuantizedSumTree::rebuild()
 {
+    version_ += 2;
     const std::size_t nLevels = levelOffset_.size();
     for (std::size_t l = 0; l + 1 < nLevels; ++l) {
         const std::uint64_t* child = base_ + levelOffset_[l];
@@ -203,6 +205,7 @@ void QuantizedSumTree::resizeCapacity(std::size_t capacity)
     for (std::size_t c = 0; c < ncol_; ++c) {
         if (t.bits_ < bits_) t.coarsen(c, bits_ - t.bits_);
     }
+    t.version_ = version_ + 2;
     *this = std::move(t);
 }
 

@@ -12,6 +12,7 @@ namespace {
 struct SwaJump {
     static constexpr const char* name = "SWA";
     static constexpr bool equalWeights = false;
+    static constexpr bool lookahead = true;  // eq 21 changes one particle: one set()
 
     //- Eq 21: (z1, w1), (z2, w2) -> (z1 + z2, w1 m1/(m1 + m2)), (z2, w2). Only particle j1
     //  changes, in place; sum w*m is conserved exactly.

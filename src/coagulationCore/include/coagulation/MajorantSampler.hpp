@@ -84,6 +84,7 @@ public:
             bins_.finishBuild(n);
             return;
         }
+        ahead_.valid = false;
         tree_.reset(nTreeColumns_, capacity);
         if (nTreeColumns_ == 0) return;
         for (std::size_t j = 0; j < n; ++j) {
@@ -162,56 +163,45 @@ public:
     //- A proposal (j1, j2) for u uniform in [0, rateSum(n)), rateSum(n) called since the last
     //  change; j1 == j2 is possible (and rejected by the caller). `particles` lets the store
     //  prefetch the candidates' records.
-#if defined(__GNUC__)
-    __attribute__((always_inline))  // once per event, from one place: as fast as written inline
-#endif
     void propose(double u, std::size_t n, Rng& rng, const Particle* particles, std::size_t& j1,
-                 std::size_t& j2) const
+                 std::size_t& j2)
     {
-        std::size_t term = lastTerm_;  // u past the others' rates (round-off): the last positive
-        for (std::size_t k = 0; k < lastTerm_; ++k) {
-            if (u < termRate_[k]) {
-                term = k;
-                break;
-            }
-            u -= termRate_[k];
-        }
+        proposeWith<false>(u, n, rng, particles, j1, j2);
+    }
+
+    //- Draws made ahead (issue 19: software pipelining of the event loop). lookAhead() makes
+    //  the proposal that propose(u, n, rng, particles) would make now for an rng whose next
+    //  words are those of `peek`: the same term and walks, kept. The next proposeAhead(), the
+    //  same as propose() otherwise, takes their leaves through QuantizedSumTree::drawNear()
+    //  for its own random integers, exact, and walks where that declines (another term, a
+    //  change other than one set(), a leaf farther than a few intervals). So the results
+    //  are propose()'s bit for bit, and a caller that calls lookAhead() before its change of
+    //  the particles has the walks' cache misses overlap that work instead of following it.
+    //  Worth it only in a tree too big for the caches: lookaheadPays().
+    bool lookaheadPays() const { return !binned_ && nTreeColumns_ > 0 && tree_.lookaheadPays(); }
+
+    void lookAhead(double u, std::size_t n, Rng::Engine& peek, const Particle* particles)
+    {
+        const std::size_t term = chooseTerm(u);
         const Column& first = columns_[termFirst_[term]];
         const Column& second = columns_[termSecond_[term]];
+        ahead_.term = term;
+        ahead_.valid = true;
         if (!first.uniform && !second.uniform) {
-            // both from the store, the two walks' (candidates') loads overlapping; the
-            // random numbers drawn in the same order as one after the other
-            if (binned_) {
-                const double u1 = rng.uniform() * columnTotals_[first.tree];
-                const double u2 = rng.uniform() * columnTotals_[second.tree];
-                bins_.samplePair(first.tree, u1, second.tree, u2, rng, j1, j2);
-            } else {
-                const std::uint64_t u1 = rng.uniformIndex(tree_.totalInteger(first.tree));
-                const std::uint64_t u2 = rng.uniformIndex(tree_.totalInteger(second.tree));
-                tree_.samplePair(first.tree, u1, second.tree, u2, particles, sizeof(Particle),
-                                 j1, j2);
-                tree_.prefetchPath(j1);  // for the change of j1 that follows an acceptance
-            }
-        } else {
-            j1 = sampleColumn(first, n, rng, particles);
-#if defined(__GNUC__)
-            __builtin_prefetch(&particles[j1 < n ? j1 : 0]);
-#endif
-            if (binned_) {
-                bins_.prefetchLeaf(j1 < n ? j1 : 0);
-            } else if (nTreeColumns_ > 0) {
-                tree_.prefetchPath(j1);
-            }
-            j2 = sampleColumn(second, n, rng, particles);
+            const std::uint64_t u1 = Rng::predictedIndex(peek(), tree_.totalInteger(first.tree));
+            const std::uint64_t u2 = Rng::predictedIndex(peek(), tree_.totalInteger(second.tree));
+            tree_.walkPair(first.tree, u1, second.tree, u2, particles, sizeof(Particle),
+                           ahead_.first, ahead_.second);
+            return;
         }
-#if defined(__GNUC__)
-        if (binned_) {
-            // the caller's kernel evaluation and the change of j1 come next
-            __builtin_prefetch(&particles[j1 < n ? j1 : 0]);
-            __builtin_prefetch(&particles[j2 < n ? j2 : 0]);
-            bins_.prefetchLeaf(j1 < n ? j1 : 0);
-        }
-#endif
+        lookAheadColumn(first, n, peek, particles, ahead_.first);
+        lookAheadColumn(second, n, peek, particles, ahead_.second);
+    }
+
+    void proposeAhead(double u, std::size_t n, Rng& rng, const Particle* particles,
+                      std::size_t& j1, std::size_t& j2)
+    {
+        proposeWith<true>(u, n, rng, particles, j1, j2);
     }
 
     //- The proposal rate of the pair (p1, p2) in the rateSum() units: sum_t coeff_t F_t(p1)
@@ -272,6 +262,92 @@ private:
 
     std::size_t columnFor(int b, bool weighted, const std::string& who);
 
+    //- propose(), and with Ahead proposeAhead(): the draws made by lookAhead() taken where
+    //  they are exact
+    template<bool Ahead>
+#if defined(__GNUC__)
+    __attribute__((always_inline))  // once per event, from one place: as fast as written inline
+#endif
+    void proposeWith(double u, std::size_t n, Rng& rng, const Particle* particles,
+                     std::size_t& j1, std::size_t& j2)
+    {
+        const std::size_t term = chooseTerm(u);
+        const Column& first = columns_[termFirst_[term]];
+        const Column& second = columns_[termSecond_[term]];
+        const bool ahead = Ahead && ahead_.valid && ahead_.term == term;
+        if (Ahead) ahead_.valid = false;
+        if (!first.uniform && !second.uniform) {
+            // both from the store, the two walks' (candidates') loads overlapping; the
+            // random numbers drawn in the same order as one after the other
+            if (binned_) {
+                const double u1 = rng.uniform() * columnTotals_[first.tree];
+                const double u2 = rng.uniform() * columnTotals_[second.tree];
+                bins_.samplePair(first.tree, u1, second.tree, u2, rng, j1, j2);
+            } else {
+                const std::uint64_t u1 = rng.uniformIndex(tree_.totalInteger(first.tree));
+                const std::uint64_t u2 = rng.uniformIndex(tree_.totalInteger(second.tree));
+                const bool have1 = ahead && tree_.drawNear(first.tree, ahead_.first, u1, j1);
+                const bool have2 = ahead && tree_.drawNear(second.tree, ahead_.second, u2, j2);
+                if (!have1 && !have2) {
+                    tree_.samplePair(first.tree, u1, second.tree, u2, particles,
+                                     sizeof(Particle), j1, j2);
+                } else if (!have1) {
+                    j1 = tree_.sample(first.tree, u1, particles, sizeof(Particle));
+                } else if (!have2) {
+                    j2 = tree_.sample(second.tree, u2, particles, sizeof(Particle));
+                }
+                tree_.prefetchPath(j1);  // for the change of j1 that follows an acceptance
+            }
+        } else {
+            j1 = sampleColumn(first, n, rng, particles, ahead ? &ahead_.first : nullptr);
+#if defined(__GNUC__)
+            __builtin_prefetch(&particles[j1 < n ? j1 : 0]);
+#endif
+            if (binned_) {
+                bins_.prefetchLeaf(j1 < n ? j1 : 0);
+            } else if (nTreeColumns_ > 0) {
+                tree_.prefetchPath(j1);
+            }
+            j2 = sampleColumn(second, n, rng, particles, ahead ? &ahead_.second : nullptr);
+        }
+#if defined(__GNUC__)
+        if (binned_) {
+            // the caller's kernel evaluation and the change of j1 come next
+            __builtin_prefetch(&particles[j1 < n ? j1 : 0]);
+            __builtin_prefetch(&particles[j2 < n ? j2 : 0]);
+            bins_.prefetchLeaf(j1 < n ? j1 : 0);
+        }
+#endif
+    }
+
+    //- The term of a proposal at u in [0, rateSum): u past the others' rates (round-off) gives
+    //  the last positive one
+    std::size_t chooseTerm(double u) const
+    {
+        for (std::size_t k = 0; k < lastTerm_; ++k) {
+            if (u < termRate_[k]) return k;
+            u -= termRate_[k];
+        }
+        return lastTerm_;
+    }
+
+    //- lookAhead() for one column: a tree column's walk kept in d; for a uniform one the
+    //  predicted particle's record and tree path prefetched
+    void lookAheadColumn(const Column& col, std::size_t n, Rng::Engine& peek,
+                         const Particle* particles, QuantizedSumTree::Draw& d) const
+    {
+        if (col.uniform) {
+            const std::size_t j = Rng::predictedIndex(peek(), n);
+#if defined(__GNUC__)
+            __builtin_prefetch(&particles[j]);
+#endif
+            tree_.prefetchPath(j);
+        } else {
+            tree_.walk(col.tree, Rng::predictedIndex(peek(), tree_.totalInteger(col.tree)),
+                       particles, sizeof(Particle), d);
+        }
+    }
+
     //- The tree columns of particle p into leaf_
     void basisColumns(const Particle& p)
     {
@@ -305,15 +381,19 @@ private:
         return columnTotals_[col.tree];
     }
 
+    //- A draw from one column; `ahead` (or null): the tree column's draw made by lookAhead()
     std::size_t sampleColumn(const Column& col, std::size_t n, Rng& rng,
-                             const Particle* particles) const
+                             const Particle* particles,
+                             const QuantizedSumTree::Draw* ahead) const
     {
         if (col.uniform) return static_cast<std::size_t>(rng.uniformIndex(n));
         if (binned_) {
             return bins_.sample(col.tree, rng.uniform() * columnTotals_[col.tree], rng);
         }
-        return tree_.sample(col.tree, rng.uniformIndex(tree_.totalInteger(col.tree)), particles,
-                            sizeof(Particle));
+        const std::uint64_t u = rng.uniformIndex(tree_.totalInteger(col.tree));
+        std::size_t j = 0;
+        if (ahead && tree_.drawNear(col.tree, *ahead, u, j)) return j;
+        return tree_.sample(col.tree, u, particles, sizeof(Particle));
     }
 
     bool weightedSecond_;
@@ -330,6 +410,13 @@ private:
     std::vector<double> phi_;
     std::vector<double> phi2_;
     std::size_t lastTerm_ = 0;       // rateSum(): the last term with a positive rate
+    //- lookAhead()'s draws for the next proposeAhead(): its term and the tree columns' walks
+    struct Ahead {
+        bool valid = false;
+        std::size_t term = 0;
+        QuantizedSumTree::Draw first, second;
+    };
+    Ahead ahead_;
     std::vector<double> leaf_;          // one particle's tree columns
     std::vector<double> columnTotals_;  // the store's column totals as of rateSum()
     QuantizedSumTree tree_;

@@ -79,11 +79,23 @@ public:
     //- Uniform on the open interval (0,1): 53 random bits, centred in their bin. The top
     //  bin's centre, 1 - 2^-54, is not a double and would round to 1: it becomes 1 - 2^-53,
     //  the largest double below 1 (every other bin is exact, so no other draw changes).
-    double uniform()
+    double uniform() { return toUniform(engine_()); }
+
+    //- The uniform() of one engine word
+    static double toUniform(std::uint64_t word)
     {
         const double u =
-            (static_cast<double>(engine_() >> 11) + 0.5) * (1.0 / 9007199254740992.0);  // 2^-53
+            (static_cast<double>(word >> 11) + 0.5) * (1.0 / 9007199254740992.0);  // 2^-53
         return u < 1.0 ? u : 1.0 - 1.0 / 9007199254740992.0;  // 1 - 2^-53
+    }
+
+    //- The uniformIndex(n) of one engine word when that word is not rejected (Lemire's
+    //  multiply-high; uniformIndex draws again for the first (2^64 mod n) values of the low
+    //  half): a prediction for prefetching, exact except for a rejected word
+    static std::uint64_t predictedIndex(std::uint64_t word, std::uint64_t n)
+    {
+        __extension__ typedef unsigned __int128 uint128;
+        return static_cast<std::uint64_t>((static_cast<uint128>(word) * n) >> 64);
     }
 
     //- Exponentially distributed with the given rate (> 0).
