@@ -168,8 +168,8 @@ TEST(MajorantSampler, PairRateFromTheLeavesIsThePairRateFromTheParticles)
 //- proposeAhead() after lookAhead() proposes exactly the pairs propose() does, along a
 //  population that changes between the two calls as SWA's does (one set()) and otherwise
 //  (coarsenings, appends, removals by swap): two samplers on the same particles and random
-//  streams, one looking ahead with the stream's next words, for 4 kernels (SWA's weighted
-//  second factors). A bigger tree than the rest of this file (400 particles, 3 levels),
+//  streams, one looking ahead with the stream's next words (or, every third proposal,
+//  with other words), for 4 kernels (SWA's weighted second factors). A bigger tree than the rest of this file (400 particles, 3 levels),
 //  so that the draws made ahead have walks to save.
 TEST(MajorantSampler, ProposalsDrawnAheadAreTheProposals)
 {
@@ -198,9 +198,15 @@ TEST(MajorantSampler, ProposalsDrawnAheadAreTheProposals)
             ASSERT_EQ(a1, b1) << name << " proposal " << s;
             ASSERT_EQ(a2, b2) << name << " proposal " << s;
             ++compared;
-            // the next proposal drawn ahead, before this one's change
-            Rng::Engine peek = rngAhead.engine();
-            ahead.lookAhead(Rng::toUniform(peek()) * sum, n, peek, P.data());
+            // the next proposal drawn ahead, before this one's change; every third from other
+            // words (a wrong guess, often of another term: declined or exact all the same)
+            if (s % 3 == 2) {
+                Rng::Engine peek = changes.engine();
+                ahead.lookAhead(changes.uniform() * sum, n, peek, P.data());
+            } else {
+                Rng::Engine peek = rngAhead.engine();
+                ahead.lookAhead(Rng::toUniform(peek()) * sum, n, peek, P.data());
+            }
             const double r = changes.uniform();
             if (r < 0.7) {
                 if (a1 == a2) continue;
