@@ -193,7 +193,11 @@ bool JumpProcess<Jump>::accepted(std::size_t j1, const Particle& p1, std::size_t
     const double proposed = sampler_.pairRateAt(j1, p1, j2, p2);
     const double K = kernel(p1.type, p2.type);
     const double target = sampler_.targetRate(K, p2);
-    if (target < proposed) return rng.uniform() * proposed < target;
+    // One uniform for every pair, also where it decides nothing (K (w2) equal to the rate it
+    // was proposed at), so that a proposal takes a fixed count of the engine's words and the
+    // loop can tell the next proposal's words before this acceptance (events<true>)
+    const double uAccept = rng.uniform();
+    if (target < proposed) return uAccept * proposed < target;
     if (target <= proposed * (1.0 + 1e-9)) return true;
     std::ostringstream os;
     os << who() << ": kernel '" << kernel.name() << "' value " << K << " exceeds its majorant "
@@ -283,19 +287,21 @@ void JumpProcess<Jump>::events(CellPopulation& pop, const CoagulationKernel& ker
         } else {
             sampler_.propose((u - inceptionRate) / scale, n, rng, P.data(), j1, j2);
         }
-        const bool real =
-            j1 != j2 && j1 < n && j2 < n && accepted(j1, P[j1], j2, P[j2], kernel, rng);
         if (Ahead) {
-            // The next proposal, from the engine's next words (a waiting time, a uniform, the
-            // walks' integers) and this event's rates, walks the tree now: its cache misses
-            // overlap this event's change. proposeAhead() keeps only what is exact.
+            // The next proposal, from the engine's next words (past this pair's acceptance: a
+            // waiting time, a uniform, the walks' integers) and this event's rates, walks the
+            // tree now: its cache misses overlap this event's acceptance and change.
+            // proposeAhead() keeps only what is exact.
             Rng::Engine peek = rng.engine();
+            if (j1 != j2 && j1 < n && j2 < n) peek();  // the acceptance's uniform
             peek();
             const double uNext = Rng::toUniform(peek()) * totalRate;
             if (uNext >= inceptionRate) {
                 sampler_.lookAhead((uNext - inceptionRate) / scale, n, peek, P.data());
             }
         }
+        const bool real =
+            j1 != j2 && j1 < n && j2 < n && accepted(j1, P[j1], j2, P[j2], kernel, rng);
         if (!real) {
             ++stats.fictitious;
             continue;
