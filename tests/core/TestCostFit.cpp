@@ -95,3 +95,45 @@ TEST(CostFit, UndeterminedWhereTheDataHoldNoFit)
     EXPECT_EQ(few.count(), 0u);
     EXPECT_FALSE(few.solve().determined);
 }
+
+//- cellWork's ratios: eventCost = c0 / p and visit = c2 / p, p = move + c1, with the delta
+//  method's errors (J cov J^T, J = (1/p, -e/p, 0) and (0, -v/p, 1/p)); undetermined where the
+//  fit is, nothing moved, or p is not above a tenth of a move (the fit of a 3-cell
+//  processor put p at or below zero, and the errors overflowed), never infinite or NaN
+TEST(CostFit, RelativeCostsOnlyWhereAParticleCostsSomething)
+{
+    CostFit::Result r;
+    r.determined = true;
+    r.coef = {90e-9, 25e-9, -6e-6};
+    r.cov = {{{4e-19, 1e-19, 2e-17}, {1e-19, 9e-18, -3e-17}, {2e-17, -3e-17, 1e-10}}};
+    const double m = 250e-9;
+    const CostFit::Relative q = CostFit::relative(r, m);
+    ASSERT_TRUE(q.determined);
+    const double p = m + r.coef[1];
+    EXPECT_DOUBLE_EQ(q.eventCost, r.coef[0] / p);
+    EXPECT_DOUBLE_EQ(q.visit, r.coef[2] / p);
+    const double Je[3] = {1.0 / p, -q.eventCost / p, 0.0};
+    const double Jv[3] = {0.0, -q.visit / p, 1.0 / p};
+    double ve = 0.0, vv = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        for (int k = 0; k < 3; ++k) {
+            ve += Je[i] * r.cov[i][k] * Je[k];
+            vv += Jv[i] * r.cov[i][k] * Jv[k];
+        }
+    }
+    EXPECT_NEAR(q.eventCostErr, std::sqrt(ve), 1e-12 * std::sqrt(ve));
+    EXPECT_NEAR(q.visitErr, std::sqrt(vv), 1e-12 * std::sqrt(vv));
+
+    for (const double c1 : {-m, -0.95 * m, -m + 1e-300, -1e300, std::nan("")}) {
+        CostFit::Result bad = r;
+        bad.coef[1] = c1;
+        const CostFit::Relative b = CostFit::relative(bad, m);
+        EXPECT_FALSE(b.determined) << c1;
+        EXPECT_TRUE(std::isfinite(b.eventCost) && std::isfinite(b.eventCostErr)) << c1;
+    }
+    EXPECT_TRUE(CostFit::relative(r, m).determined);
+    EXPECT_FALSE(CostFit::relative(r, 0.0).determined);  // nothing moved
+    EXPECT_FALSE(CostFit::relative(r, std::nan("")).determined);
+    r.determined = false;
+    EXPECT_FALSE(CostFit::relative(r, m).determined);
+}

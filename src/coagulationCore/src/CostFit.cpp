@@ -64,4 +64,24 @@ CostFit::Result CostFit::solve() const
     return r;
 }
 
+CostFit::Relative CostFit::relative(const Result& r, double moveSeconds)
+{
+    Relative q;
+    if (!r.determined || !(moveSeconds > 0.0) || !std::isfinite(moveSeconds)) return q;
+    const double p = moveSeconds + r.coef[1];
+    if (!(p > minParticleShare * moveSeconds) || !std::isfinite(p)) return q;
+    const double e = r.coef[0] / p;
+    const double v = r.coef[2] / p;
+    // d(c0/p) = dc0/p - c0 dc1/p^2 (and the same for c2): first order
+    const double eVar = (r.cov[0][0] - 2.0 * e * r.cov[0][1] + e * e * r.cov[1][1]) / (p * p);
+    const double vVar = (r.cov[2][2] - 2.0 * v * r.cov[2][1] + v * v * r.cov[1][1]) / (p * p);
+    q.eventCost = e;
+    q.visit = v;
+    q.eventCostErr = std::sqrt(std::max(eVar, 0.0));
+    q.visitErr = std::sqrt(std::max(vVar, 0.0));
+    q.determined = std::isfinite(e) && std::isfinite(v) && std::isfinite(q.eventCostErr)
+                   && std::isfinite(q.visitErr);
+    return q;
+}
+
 } // namespace coag

@@ -28,7 +28,7 @@ of workDecomposition's runsPerPart (issue 19, core and case tests); B119 in the 
 tree's refusal of values that are not finite and >= 0; B120-B121 in the arrivals of a decomposed
 run's particle exchange (issue 19, case_parallel); B122-B123 in the tree's ceiling without
 std::ceil and B124 in the report's order of the cells, B125-B126 in the cost fit of cellWork (issue 19,
-fifth session); B127 in the pair rate read from the tree's leaves and B128-B129 in the tree's build block by block (issue 19, sixth session); B130-B136 in the draws made ahead of the event loop (issue 19, seventh session). B14-B17 now
+fifth session); B127 in the pair rate read from the tree's leaves and B128-B129 in the tree's build block by block (issue 19, sixth session); B130-B136 in the draws made ahead of the event loop and B137-B138 in cellWork's ratios (issue 19, seventh session). B14-B17 now
 sit in the coagulationPost package (the campaign measured them in the scripts it came from).
 
     bugs.py list                 id, file, targeted tests, what the bug is
@@ -557,6 +557,16 @@ BUGS = {
              "",
              SAMPLERTESTS,
              "quantised tree: the build takes the scale without the last partial block's values (and lets their NaNs through)"),
+    "B137": ("src/coagulationCore/src/CostFit.cpp",
+             "    if (!(p > minParticleShare * moveSeconds) || !std::isfinite(p)) return q;\n",
+             "    if (!(p > 0.0) || !std::isfinite(p)) return q;\n",
+             "core.CostFit",
+             "cellWork's ratios: a particle fitted at a twentieth of a move still gives an eventCost"),
+    "B138": ("src/coagulationCore/src/CostFit.cpp",
+             "    const double eVar = (r.cov[0][0] - 2.0 * e * r.cov[0][1] + e * e * r.cov[1][1]) / (p * p);\n",
+             "    const double eVar = (r.cov[0][0] + 2.0 * e * r.cov[0][1] + e * e * r.cov[1][1]) / (p * p);\n",
+             "core.CostFit",
+             "cellWork's ratios: the eventCost's error with the covariance term's sign turned"),
     "B130": (TREE,
              "            if (lastLeaf_ < d.leaf) start += lastDelta_[c];  // modulo 2^64: exact\n",
              "",

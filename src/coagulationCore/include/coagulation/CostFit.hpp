@@ -42,6 +42,23 @@ public:
     };
     Result solve() const;
 
+    //- cellWork's costs in particles: p = moveSeconds + coef[1] (a move and a particle's
+    //  share of the cell step), eventCost = coef[0] / p, visit = coef[2] / p, with
+    //  first-order errors from the covariance (moveSeconds as measured). Undetermined where
+    //  the fit is, or where p is not above minParticleShare of a move: a fit that puts a
+    //  particle's share of the cell step near minus a move holds no ratio (on the duct's
+    //  3-cell processor it put p at or below zero, and the ratios' errors overflowed into a
+    //  floating-point trap at the end of the run).
+    static constexpr double minParticleShare = 0.1;
+    struct Relative {
+        bool determined = false;
+        double eventCost = 0.0;
+        double eventCostErr = 0.0;
+        double visit = 0.0;
+        double visitErr = 0.0;
+    };
+    static Relative relative(const Result& r, double moveSeconds);
+
 private:
     std::array<std::array<double, nTerms>, nTerms> normal_{};
     std::array<double, nTerms> rhs_{};

@@ -121,40 +121,36 @@ void Foam::cloudFunctions::cellWork::postStep()
 void Foam::cloudFunctions::cellWork::reportFit()
 {
     const coag::CostFit::Result r = fit_.solve();
-    if (r.determined && moves_ > 0)
+    const scalar m = moves_ > 0 ? transportSeconds_/moves_ : 0;
+    const coag::CostFit::Relative q = coag::CostFit::relative(r, m);
+    if (r.determined)
     {
-        // eventCost a/p and the visit c/p, p = m + b; first-order errors
-        // from the fit's covariance, m as measured
-        const scalar m = transportSeconds_/moves_;
-        const scalar p = max(m + r.coef[1], VSMALL);
-        const scalar e = r.coef[0]/p;
-        const scalar v = r.coef[2]/p;
-        const scalar eErr = Foam::sqrt(max
-        (
-            r.cov[0][0]/sqr(p) + sqr(e/p)*r.cov[1][1] - 2*e/sqr(p)*r.cov[0][1],
-            scalar(0)
-        ));
-        const scalar vErr = Foam::sqrt(max
-        (
-            r.cov[2][2]/sqr(p) + sqr(v/p)*r.cov[1][1] - 2*v/sqr(p)*r.cov[2][1],
-            scalar(0)
-        ));
         Info<< "Cloud function cellWork: cost fit over " << label(fit_.count())
             << " cell steps (this processor): an event " << 1e9*r.coef[0]
             << " +- " << 1e9*r.stdErr[0] << " ns, a particle in the cell step "
             << 1e9*r.coef[1] << " +- " << 1e9*r.stdErr[1] << " ns, a cell's"
             << " visit " << 1e6*r.coef[2] << " +- " << 1e6*r.stdErr[2]
-            << " us; a move " << 1e9*m << " ns" << nl
-            << "    eventCost = " << e << " +- " << eErr << " (in use "
-            << eventCost_ << "), a cell's visit = " << v << " +- " << vErr
-            << " particles (in use " << cellStepper::cellCost << ")" << endl;
+            << " us; a move " << 1e9*m << " ns" << nl;
+        if (q.determined)
+        {
+            Info<< "    eventCost = " << q.eventCost << " +- " << q.eventCostErr
+                << " (in use " << eventCost_ << "), a cell's visit = " << q.visit
+                << " +- " << q.visitErr << " particles (in use "
+                << cellStepper::cellCost << ")" << endl;
+        }
+        else
+        {
+            Info<< "    no eventCost from it: nothing moved, or a particle's"
+                << " share of the cell step is fitted near minus a move"
+                << " (in use " << eventCost_ << ")" << endl;
+        }
     }
     else
     {
         Info<< "Cloud function cellWork: no cost fit over "
             << label(fit_.count()) << " cell steps (this processor): the"
             << " cells' events, particles and visits do not vary"
-            << " independently enough, or nothing moved" << endl;
+            << " independently enough" << endl;
     }
     fit_.clear();
     transportSeconds_ = 0;
