@@ -56,6 +56,8 @@ void QuantizedSumTree::reset(std::size_t nColumns, std::size_t capacity)
 #endif
     }
     base_ = storage_.get();
+    nLevels_ = levelOffset_.size();
+    for (std::size_t l = 0; l < nLevels_; ++l) levelBase_[l] = base_ + levelOffset_[l];
     std::fill(base_, base_ + offset, std::uint64_t(0));
     totals_.assign(ncol_, 0);
     exponent_.assign(ncol_, 0);

@@ -126,7 +126,7 @@ public:
     std::size_t sample(std::size_t c, std::uint64_t u) const
     {
         std::size_t node = 0;
-        for (std::size_t l = levelOffset_.size(); l-- > 0;) step<false>(l, c, u, node, nullptr, 0);
+        for (std::size_t l = nLevels_; l-- > 0;) step<false>(l, c, u, node, nullptr, 0);
         return node;
     }
     std::size_t sample(std::size_t c, std::uint64_t u, const void* leafData,
@@ -134,11 +134,11 @@ public:
     {
         std::size_t node = 0;
         if (prefetch_) {
-            for (std::size_t l = levelOffset_.size(); l-- > 0;) {
+            for (std::size_t l = nLevels_; l-- > 0;) {
                 step<true>(l, c, u, node, leafData, leafBytes);
             }
         } else {
-            for (std::size_t l = levelOffset_.size(); l-- > 0;) {
+            for (std::size_t l = nLevels_; l-- > 0;) {
                 step<false>(l, c, u, node, nullptr, 0);
             }
         }
@@ -154,12 +154,12 @@ public:
     {
         std::size_t n1 = 0, n2 = 0;
         if (prefetch_) {
-            for (std::size_t l = levelOffset_.size(); l-- > 0;) {
+            for (std::size_t l = nLevels_; l-- > 0;) {
                 step<true>(l, c1, u1, n1, leafData, leafBytes);
                 step<true>(l, c2, u2, n2, leafData, leafBytes);
             }
         } else {
-            for (std::size_t l = levelOffset_.size(); l-- > 0;) {
+            for (std::size_t l = nLevels_; l-- > 0;) {
                 step<false>(l, c1, u1, n1, nullptr, 0);
                 step<false>(l, c2, u2, n2, nullptr, 0);
             }
@@ -191,7 +191,7 @@ public:
     {
         std::uint64_t r1 = u1, r2 = u2;
         std::size_t n1 = 0, n2 = 0;
-        for (std::size_t l = levelOffset_.size(); l-- > 0;) {
+        for (std::size_t l = nLevels_; l-- > 0;) {
             step<true>(l, c1, r1, n1, leafData, leafBytes);
             step<true>(l, c2, r2, n2, leafData, leafBytes);
         }
@@ -204,7 +204,7 @@ public:
     {
         std::uint64_t r = u;
         std::size_t node = 0;
-        for (std::size_t l = levelOffset_.size(); l-- > 0;) {
+        for (std::size_t l = nLevels_; l-- > 0;) {
             step<true>(l, c, r, node, leafData, leafBytes);
         }
         d = Draw{node, u - r, version_};
@@ -249,9 +249,9 @@ public:
 #if defined(__GNUC__)
         if (!prefetch_) return;
         std::size_t idx = j;
-        const std::size_t n = levelOffset_.size() < depth ? levelOffset_.size() : depth;
+        const std::size_t n = nLevels_ < depth ? nLevels_ : depth;
         for (std::size_t l = 0; l < n; ++l) {
-            const std::uint64_t* p = base_ + levelOffset_[l] + (idx >> 3) * blockSize_;
+            const std::uint64_t* p = levelBase_[l] + (idx >> 3) * blockSize_;
             for (std::size_t c = 0; c < ncol_; ++c) __builtin_prefetch(p + c * fanOut);
             idx >>= 3;
         }
@@ -324,11 +324,11 @@ private:
             }
         }
 #endif
-        const std::uint64_t* v = base_ + levelOffset_[l] + node * blockSize_ + c * fanOut;
+        const std::uint64_t* v = levelBase_[l] + node * blockSize_ + c * fanOut;
 #if defined(__GNUC__)
         if (prefetch_ && l > 0 && l <= 3) {
             const std::uint64_t* ch =
-                base_ + levelOffset_[l - 1] + node * fanOut * blockSize_ + c * fanOut;
+                levelBase_[l - 1] + node * fanOut * blockSize_ + c * fanOut;
             for (std::size_t k = 0; k < fanOut; ++k) __builtin_prefetch(ch + k * blockSize_);
         }
 #endif
@@ -361,9 +361,8 @@ private:
     {
         const std::size_t nc = NC > 0 ? NC : ncol_;
         std::size_t idx = j;
-        const std::size_t nLevels = levelOffset_.size();
-        for (std::size_t l = 0; l < nLevels; ++l) {
-            std::uint64_t* block = base_ + levelOffset_[l] + (idx >> 3) * (nc * fanOut) + (idx & 7);
+        for (std::size_t l = 0; l < nLevels_; ++l) {
+            std::uint64_t* block = levelBase_[l] + (idx >> 3) * (nc * fanOut) + (idx & 7);
             for (std::size_t c = 0; c < nc; ++c) block[c * fanOut] += delta[c];
             idx >>= 3;
         }
@@ -385,6 +384,11 @@ private:
     std::size_t capacity_ = 0;
     int bits_ = 52;              // a leaf q is at most 2^bits_
     std::vector<std::size_t> levelOffset_;  // in words from base_; level 0 = leaves
+    //- base_ + levelOffset_[l], and the count of levels: the walks' and changes' addresses
+    //  without the vector's indirection (a capacity <= 2^40 has at most 15 levels)
+    static constexpr std::size_t maxLevels = 16;
+    std::uint64_t* levelBase_[maxLevels] = {};
+    std::size_t nLevels_ = 0;
     std::vector<std::size_t> levelNodes_;
     std::vector<std::uint64_t> totals_;
     std::vector<int> exponent_;        // per column: the scale 2^e
