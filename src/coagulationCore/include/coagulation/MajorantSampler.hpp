@@ -185,8 +185,12 @@ public:
         const std::size_t term = chooseTerm(u);
         const Column& first = columns_[termFirst_[term]];
         const Column& second = columns_[termSecond_[term]];
+        // a term of positive rate (chooseTerm) has positive totals; the guard keeps a walk
+        // off an empty column (u = 0 would step past the tree's last nodes) whatever the rates
+        ahead_.valid = (first.uniform || tree_.totalInteger(first.tree) > 0)
+                       && (second.uniform || tree_.totalInteger(second.tree) > 0);
+        if (!ahead_.valid) return;
         ahead_.term = term;
-        ahead_.valid = true;
         if (!first.uniform && !second.uniform) {
             const std::uint64_t u1 = Rng::predictedIndex(peek(), tree_.totalInteger(first.tree));
             const std::uint64_t u2 = Rng::predictedIndex(peek(), tree_.totalInteger(second.tree));
