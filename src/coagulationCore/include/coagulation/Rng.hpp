@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <string>
 
@@ -74,7 +75,7 @@ class Rng {
 public:
     using Engine = Xoshiro256pp;
 
-    explicit Rng(std::uint64_t seed) : engine_(seed) {}
+    explicit Rng(std::uint64_t seed) : engine_(seed), zig_(&ziggurat()) {}
 
     //- Uniform on the open interval (0,1): 53 random bits, centred in their bin. The top
     //  bin's centre, 1 - 2^-54, is not a double and would round to 1: it becomes 1 - 2^-53,
@@ -98,8 +99,35 @@ public:
         return static_cast<std::uint64_t>((static_cast<uint128>(word) * n) >> 64);
     }
 
-    //- Exponentially distributed with the given rate (> 0).
-    double exponential(double rate) { return -std::log(uniform()) / rate; }
+    //- Exponentially distributed with the given rate (> 0)
+    double exponential(double rate) { return standardExponential() / rate; }
+
+    //- Exp(1) by the ziggurat method (Marsaglia & Tsang, "The ziggurat method for generating
+    //  random variables", J. Stat. Softw. 5(8), 2000, its exponential with 256 regions): one
+    //  engine word, a table compare and a multiply in 98.9 % of the draws, where -log(u)
+    //  took a library logarithm (measured: about 10 ns of an SWA event's 82 at N = 1e3).
+    //  The region is the word's low 8 bits and the abscissa its top 53 (disjoint bits, so
+    //  the two are independent, unlike the paper's 32-bit word used for both). The rest, a
+    //  wedge or the tail beyond r, goes to exponentialSlow(): exact in law either way.
+    double standardExponential()
+    {
+        const std::uint64_t w = engine_();
+        const std::size_t i = w & 255;
+        const std::uint64_t m = w >> 11;
+        if (m < zig_->k[i]) return static_cast<double>(m) * zig_->w[i];
+        return exponentialSlow(i, m);
+    }
+
+    //- The ziggurat's tables: region i's abscissa per unit of the 53-bit word (w), the part
+    //  of it under the curve for every abscissa (k: accepted at once below it), exp(-x_i) (f)
+    struct Ziggurat {
+        static constexpr double r = 7.697117470131487;      // the base strip's right end
+        static constexpr double v = 3.949659822581572e-3;   // each region's area
+        std::uint64_t k[256];
+        double w[256];
+        double f[256];
+    };
+    static const Ziggurat& ziggurat();
 
     //- Uniform on {0, ..., n-1}, unbiased (Lemire, "Fast random integer generation in an
     //  interval", 2019); n must be > 0. Inline: it is drawn in the inner event loops.
@@ -130,7 +158,11 @@ public:
 private:
     [[noreturn]] static void throwZeroRange();
 
+    //- standardExponential() past the rectangle of region i (the word's abscissa m)
+    double exponentialSlow(std::size_t i, std::uint64_t m);
+
     Engine engine_;
+    const Ziggurat* zig_;
 };
 
 } // namespace coag
