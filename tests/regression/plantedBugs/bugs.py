@@ -28,7 +28,7 @@ of workDecomposition's runsPerPart (issue 19, core and case tests); B119 in the 
 tree's refusal of values that are not finite and >= 0; B120-B121 in the arrivals of a decomposed
 run's particle exchange (issue 19, case_parallel); B122-B123 in the tree's ceiling without
 std::ceil and B124 in the report's order of the cells, B125-B126 in the cost fit of cellWork (issue 19,
-fifth session); B127 in the pair rate read from the tree's leaves and B128-B129 in the tree's build block by block (issue 19, sixth session); B130-B136 in the draws made ahead of the event loop and B137-B138 in cellWork's ratios (issue 19, seventh session). B14-B17 now
+fifth session); B127 in the pair rate read from the tree's leaves and B128-B129 in the tree's build block by block (issue 19, sixth session); B130-B136 in the draws made ahead of the event loop B137-B138 in cellWork's ratios and B139-B141 in the ziggurat exponential (issue 19, seventh session). B14-B17 now
 sit in the coagulationPost package (the campaign measured them in the scripts it came from).
 
     bugs.py list                 id, file, targeted tests, what the bug is
@@ -567,6 +567,21 @@ BUGS = {
              "    const double eVar = (r.cov[0][0] + 2.0 * e * r.cov[0][1] + e * e * r.cov[1][1]) / (p * p);\n",
              "core.CostFit",
              "cellWork's ratios: the eventCost's error with the covariance term's sign turned"),
+    "B139": ("src/coagulationCore/src/Rng.cpp",
+             "        if (i == 0) return Ziggurat::r - std::log(uniform());\n",
+             "        if (i == 0) return -std::log(uniform());\n",
+             "core.Rng",
+             "ziggurat exponential: the tail drawn from 0 instead of beyond r"),
+    "B140": ("src/coagulationCore/src/Rng.cpp",
+             "        if (z.f[i] + uniform() * (z.f[i - 1] - z.f[i]) < std::exp(-x)) return x;\n",
+             "        if (z.f[i] + uniform() * (z.f[i - 1] - z.f[i]) < std::exp(x)) return x;\n",
+             "core.Rng",
+             "ziggurat exponential: the wedge compared with exp(x), so every wedge point is taken"),
+    "B141": ("src/coagulationCore/src/Rng.cpp",
+             "        z.k[i + 1] = static_cast<std::uint64_t>((de / te) * m);\n",
+             "        z.k[i] = static_cast<std::uint64_t>((de / te) * m);\n",
+             "core.Rng",
+             "ziggurat exponential: each region's accept-at-once bound written into the region beside it"),
     "B130": (TREE,
              "            if (lastLeaf_ < d.leaf) start += lastDelta_[c];  // modulo 2^64: exact\n",
              "",
