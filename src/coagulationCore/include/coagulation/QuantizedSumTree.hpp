@@ -134,9 +134,7 @@ public:
     {
         std::size_t node = 0;
         if (prefetch_) {
-            for (std::size_t l = nLevels_; l-- > 0;) {
-                step<true>(l, c, u, node, leafData, leafBytes);
-            }
+            fetchingWalk(c, u, node, leafData, leafBytes);
         } else {
             for (std::size_t l = nLevels_; l-- > 0;) {
                 step<false>(l, c, u, node, nullptr, 0);
@@ -154,10 +152,7 @@ public:
     {
         std::size_t n1 = 0, n2 = 0;
         if (prefetch_) {
-            for (std::size_t l = nLevels_; l-- > 0;) {
-                step<true>(l, c1, u1, n1, leafData, leafBytes);
-                step<true>(l, c2, u2, n2, leafData, leafBytes);
-            }
+            fetchingWalks(c1, u1, n1, c2, u2, n2, leafData, leafBytes);
         } else {
             for (std::size_t l = nLevels_; l-- > 0;) {
                 step<false>(l, c1, u1, n1, nullptr, 0);
@@ -180,9 +175,10 @@ public:
     };
 
     //- Whether draws made ahead pay in this tree: it is too big for the caches (measured, SWA
-    //  additive on the issue-19 machine: 16 % fewer ns per event at N = 1e6 with a 27 MB tree,
-    //  8 % more at N = 1e5 with 2.7 MB, where the walk's misses are few and the extra
-    //  instructions cost more than they hide)
+    //  additive on the issue-19 machine, same binary on and off: 0-30 % fewer ns per event at
+    //  N = 1e6 with a 27 MB tree, the more the slower the memory at the time; the same at 1e5
+    //  with 2.7 MB; 11 % more at 3e4, where the walk misses little and the extra instructions
+    //  cost more than they hide)
     bool lookaheadPays() const { return memoryBytes() >= lookaheadBytes; }
 
     //- The walks of samplePair() (its prefetches included) for u1 and u2, kept as Draws
@@ -191,10 +187,7 @@ public:
     {
         std::uint64_t r1 = u1, r2 = u2;
         std::size_t n1 = 0, n2 = 0;
-        for (std::size_t l = nLevels_; l-- > 0;) {
-            step<true>(l, c1, r1, n1, leafData, leafBytes);
-            step<true>(l, c2, r2, n2, leafData, leafBytes);
-        }
+        fetchingWalks(c1, r1, n1, c2, r2, n2, leafData, leafBytes);
         d1 = Draw{n1, u1 - r1, version_};  // the walk subtracted the prefix below its leaf
         d2 = Draw{n2, u2 - r2, version_};
     }
@@ -204,9 +197,7 @@ public:
     {
         std::uint64_t r = u;
         std::size_t node = 0;
-        for (std::size_t l = nLevels_; l-- > 0;) {
-            step<true>(l, c, r, node, leafData, leafBytes);
-        }
+        fetchingWalk(c, r, node, leafData, leafBytes);
         d = Draw{node, u - r, version_};
     }
 
@@ -298,6 +289,29 @@ private:
     //- Column c coarsened by k bits: every leaf q -> ceil(q / 2^k), sums rebuilt
     void coarsen(std::size_t c, int k);
     void setExponent(std::size_t c, int e);
+
+    //- The walk with its prefetches (sample, walk), or two interleaved (samplePair, walkPair):
+    //  node ends at the leaf, u at u minus the prefix below it
+#if defined(__GNUC__)
+    __attribute__((always_inline))
+#endif
+    void fetchingWalk(std::size_t c, std::uint64_t& u, std::size_t& node, const void* leafData,
+                      std::size_t leafBytes) const
+    {
+        for (std::size_t l = nLevels_; l-- > 0;) step<true>(l, c, u, node, leafData, leafBytes);
+    }
+#if defined(__GNUC__)
+    __attribute__((always_inline))
+#endif
+    void fetchingWalks(std::size_t c1, std::uint64_t& u1, std::size_t& n1, std::size_t c2,
+                       std::uint64_t& u2, std::size_t& n2, const void* leafData,
+                       std::size_t leafBytes) const
+    {
+        for (std::size_t l = nLevels_; l-- > 0;) {
+            step<true>(l, c1, u1, n1, leafData, leafBytes);
+            step<true>(l, c2, u2, n2, leafData, leafBytes);
+        }
+    }
 
     template<bool PrefetchLeaves>
 #if defined(__GNUC__)
