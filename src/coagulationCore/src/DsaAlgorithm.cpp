@@ -32,7 +32,7 @@ struct DsaJump {
     void coagulate(CellPopulation& pop, std::size_t j1, std::size_t j2, Rng& rng,
                    MajorantSampler& sampler) const
     {
-        std::vector<Particle>& P = pop.particles;
+        ParticleVector& P = pop.particles;
         const ParticleType merged = P[j1].type + P[j2].type;
         const bool keepFirst = rng.uniform() < Rule::p(P[j1].type.mass, P[j2].type.mass);
         const std::size_t s = keepFirst ? j1 : j2;

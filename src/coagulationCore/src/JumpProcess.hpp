@@ -70,7 +70,7 @@ private:
     }
 
     //- The common weight of a DSA population (checked), or the inception weight
-    double commonWeight(const std::vector<Particle>& P, double inceptionRate) const;
+    double commonWeight(const ParticleVector& P, double inceptionRate) const;
 
     static std::string who() { return std::string("coag::") + Jump::name + "::advance"; }
 
@@ -112,7 +112,7 @@ private:
 };
 
 template <class Jump>
-double JumpProcess<Jump>::commonWeight(const std::vector<Particle>& P,
+double JumpProcess<Jump>::commonWeight(const ParticleVector& P,
                                        double inceptionRate) const
 {
     if (P.empty()) return inception_.weight;
@@ -217,7 +217,7 @@ void JumpProcess<Jump>::advance(CellPopulation& pop, const CoagulationKernel& ke
 {
     checkArguments(pop, inceptionRate, dt);
     if (&kernel != &sampler_.kernel()) sampler_.configure(kernel, who());
-    std::vector<Particle>& P = pop.particles;
+    ParticleVector& P = pop.particles;
     const double w = Jump::equalWeights ? commonWeight(P, inceptionRate) : 0.0;
 
     // Number control on entry (the caller may have moved particles in or out).
@@ -246,7 +246,7 @@ void JumpProcess<Jump>::events(CellPopulation& pop, const CoagulationKernel& ker
                                double inceptionRate, double w, double dt, Rng& rng,
                                StepStatistics& stats)
 {
-    std::vector<Particle>& P = pop.particles;
+    ParticleVector& P = pop.particles;
     // Pair rates summed over ordered pairs: SWA K w2 / V (eq 22; w2 inside the sampler's
     // second factors), DSA K w / (2V) (each unordered pair at K w / V, eqs 12, 16-17).
     const double pairFactor = Jump::equalWeights ? 0.5 * w : 1.0;

@@ -9,7 +9,7 @@ namespace coag {
 namespace {
 
 //- sum_j w_j m_j: the physical mass a population stands for (per unit sample volume V)
-double physicalMass(const std::vector<Particle>& P)
+double physicalMass(const ParticleVector& P)
 {
     double s = 0.0;
     for (const Particle& p : P) s += p.weight * p.type.mass;
@@ -20,7 +20,7 @@ double physicalMass(const std::vector<Particle>& P)
 
 void halvePopulation(CellPopulation& pop, bool equalWeights, Rng& rng, StepStatistics& stats)
 {
-    std::vector<Particle>& P = pop.particles;
+    ParticleVector& P = pop.particles;
     const std::size_t n = P.size();
     const double massBefore = physicalMass(P);
     std::size_t keep = n / 2;
@@ -43,7 +43,7 @@ void halvePopulation(CellPopulation& pop, bool equalWeights, Rng& rng, StepStati
 
 void duplicatePopulation(CellPopulation& pop, StepStatistics& stats)
 {
-    std::vector<Particle>& P = pop.particles;
+    ParticleVector& P = pop.particles;
     const std::size_t n = P.size();
     const double massBefore = physicalMass(P);
     P.reserve(2 * n);

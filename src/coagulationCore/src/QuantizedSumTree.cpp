@@ -8,9 +8,6 @@
 #include <stdexcept>
 #include <string>
 
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
 
 namespace coag {
 
@@ -45,15 +42,9 @@ void QuantizedSumTree::reset(std::size_t nColumns, std::size_t capacity)
         nodes = (nodes + fanOut - 1) / fanOut;
     }
     if (offset > storageWords_) {
-        const std::size_t bytes = offset * sizeof(std::uint64_t);
-        const std::size_t align = bytes >= hugePageBytes ? std::size_t(2) << 20 : 64;
-        const std::size_t rounded = (bytes + align - 1) / align * align;
-        storage_.reset(static_cast<std::uint64_t*>(std::aligned_alloc(align, rounded)));
-        if (!storage_) throw std::bad_alloc();
-        storageWords_ = rounded / sizeof(std::uint64_t);
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-        if (align > 64) madvise(storage_.get(), rounded, MADV_HUGEPAGE);  // a hint only
-#endif
+        const std::size_t bytes = largeArray::roundedBytes(offset * sizeof(std::uint64_t));
+        storage_.reset(static_cast<std::uint64_t*>(largeArray::allocate(bytes)));
+        storageWords_ = bytes / sizeof(std::uint64_t);
     }
     base_ = storage_.get();
     nLevels_ = levelOffset_.size();

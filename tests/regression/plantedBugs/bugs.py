@@ -28,7 +28,7 @@ of workDecomposition's runsPerPart (issue 19, core and case tests); B119 in the 
 tree's refusal of values that are not finite and >= 0; B120-B121 in the arrivals of a decomposed
 run's particle exchange (issue 19, case_parallel); B122-B123 in the tree's ceiling without
 std::ceil and B124 in the report's order of the cells, B125-B126 in the cost fit of cellWork (issue 19,
-fifth session); B127 in the pair rate read from the tree's leaves and B128-B129 in the tree's build block by block (issue 19, sixth session); B130-B136 in the draws made ahead of the event loop B137-B138 in cellWork's ratios and B139-B141 in the ziggurat exponential (issue 19, seventh session). B14-B17 now
+fifth session); B127 in the pair rate read from the tree's leaves and B128-B129 in the tree's build block by block (issue 19, sixth session); B130-B136 in the draws made ahead of the event loop B137-B138 in cellWork's ratios and B139-B141 in the ziggurat exponential (issue 19, seventh session); B142-B143 in the big arrays on huge pages (issue 19, eighth session). B14-B17 now
 sit in the coagulationPost package (the campaign measured them in the scripts it came from).
 
     bugs.py list                 id, file, targeted tests, what the bug is
@@ -77,6 +77,7 @@ TREECPP = "src/coagulationCore/src/QuantizedSumTree.cpp"
 BINS = "src/coagulationCore/include/coagulation/OctaveBins.hpp"
 BINSCPP = "src/coagulationCore/src/OctaveBins.cpp"
 PROPOSE = "src/coagulationCore/include/coagulation/MajorantSampler.hpp"
+LARGE = "src/coagulationCore/src/LargeArray.cpp"
 SAMPLERTESTS = "core.QuantizedSumTree|core.OctaveBins|core.MajorantSampler|core.Stores/MajorantSamplerStore"
 
 # Every targeted run includes the fault and bad-input cases
@@ -582,6 +583,16 @@ BUGS = {
              "        z.k[i] = static_cast<std::uint64_t>((de / te) * m);\n",
              "core.Rng",
              "ziggurat exponential: each region's accept-at-once bound written into the region beside it"),
+    "B142": (LARGE,
+             "    if (align == hugePageAlignment) madvise(p, rounded, MADV_HUGEPAGE);  // a hint only\n",
+             "",
+             "core.LargeArray",
+             "big arrays: the huge-page advice dropped (4 KiB pages, a TLB miss per random access)"),
+    "B143": (LARGE,
+             "    return bytes >= hugePageBytes ? hugePageAlignment : 64;\n",
+             "    return bytes > hugePageBytes ? hugePageAlignment : 64;\n",
+             "core.LargeArray",
+             "big arrays: an array of exactly hugePageBytes left on 64-byte alignment"),
     "B130": (TREE,
              "            if (lastLeaf_ < d.leaf) start += lastDelta_[c];  // modulo 2^64: exact\n",
              "",

@@ -70,9 +70,14 @@ public:
 
     //- All leaves from the particles, room for `capacity` (O(N)); the store is the bins
     //  when the capacity is at least binnedFrom(), else the tree.
-    void build(const std::vector<Particle>& particles, std::size_t capacity)
+    template <class Allocator>
+    void build(const std::vector<Particle, Allocator>& particles, std::size_t capacity)
     {
-        const std::size_t n = particles.size();
+        build(particles.data(), particles.size(), capacity);
+    }
+    //- build() for the n particles at `particles`
+    void build(const Particle* particles, std::size_t n, std::size_t capacity)
+    {
         if (capacity < n) capacity = n;
         binned_ = nTreeColumns_ > 0 && capacity >= binnedFrom_;
         if (binned_) {

@@ -3,6 +3,8 @@
 #ifndef COAGULATION_QUANTIZEDSUMTREE_HPP
 #define COAGULATION_QUANTIZEDSUMTREE_HPP
 
+#include "coagulation/LargeArray.hpp"
+
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -409,16 +411,13 @@ private:
     std::vector<double> scale_;        // per column: 2^e (a normal double: setExponent)
     std::vector<double> scaleInverse_; // per column: 2^-e
     std::vector<double> limitValue_;   // per column: the largest value that fits, 2^(bits_+e)
-    //- The array: 64-byte aligned; from hugePageBytes on 2 MiB aligned and advised to the
-    //  kernel's transparent huge pages (Linux), since a big tree is walked at random and
-    //  4 KiB pages then cost a TLB miss per level (measured: about 15 % of an SWA event at
-    //  N = 1e6 on the issue-19 machine).
+    //- The array (LargeArray.hpp: 64-byte aligned, on huge pages when big, since a big tree
+    //  is walked at random and 4 KiB pages then cost a TLB miss per level)
     struct FreeArray {
-        void operator()(std::uint64_t* p) const { std::free(p); }
+        void operator()(std::uint64_t* p) const { largeArray::deallocate(p); }
     };
     std::unique_ptr<std::uint64_t[], FreeArray> storage_;
     std::size_t storageWords_ = 0;
-    static constexpr std::size_t hugePageBytes = 4 * 1024 * 1024;
     std::uint64_t* base_ = nullptr;  // == storage_.get()
     //- Prefetch only trees larger than a typical L2 cache: in a cache-resident tree (the few
     //  hundred particles of a mesh cell) the prefetches cost issue slots and save nothing

@@ -13,6 +13,7 @@
 #include "coagulation/Dispersion.hpp"
 #include "coagulation/ExactSolutions.hpp"
 #include "coagulation/Inception.hpp"
+#include "coagulation/LargeArray.hpp"
 #include "coagulation/MomentSeriesFile.hpp"
 #include "coagulation/Moments.hpp"
 #include "coagulation/NanbuMethod.hpp"
