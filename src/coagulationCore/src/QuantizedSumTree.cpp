@@ -13,6 +13,12 @@ namespace coag {
 
 void QuantizedSumTree::reset(std::size_t nColumns, std::size_t capacity)
 {
+    layout(nColumns, capacity);
+    std::fill(base_, base_ + levelOffset_.back() + blockSize_, std::uint64_t(0));
+}
+
+void QuantizedSumTree::layout(std::size_t nColumns, std::size_t capacity)
+{
     if (nColumns > maxColumns) {
         throw std::invalid_argument("coag::QuantizedSumTree::reset: " + std::to_string(nColumns)
                                     + " columns, at most " + std::to_string(maxColumns));
@@ -49,7 +55,6 @@ void QuantizedSumTree::reset(std::size_t nColumns, std::size_t capacity)
     base_ = storage_.get();
     nLevels_ = levelOffset_.size();
     for (std::size_t l = 0; l < nLevels_; ++l) levelBase_[l] = base_ + levelOffset_[l];
-    std::fill(base_, base_ + offset, std::uint64_t(0));
     totals_.assign(ncol_, 0);
     exponent_.assign(ncol_, 0);
     scale_.assign(ncol_, 1.0);
@@ -117,24 +122,43 @@ void QuantizedSumTree::coarsen(std::size_t c, int k)
 
 void QuantizedSumTree::finishBuild(std::size_t n)
 {
+    finishStaged(n, nullptr);
+}
+
+void QuantizedSumTree::finishStaged(std::size_t n, const double* largestStaged)
+{
     // Leaf j of column c is word j % 8 of that column's line in block j / 8: the leaves are
     // read block by block, in the order of j (so the first bad value is the one reported),
     // with no index arithmetic per leaf
     const std::size_t fullBlocks = n / fanOut;
     const std::size_t tail = n % fanOut;
+    // the leaves from n on are zero (build() staged only those below n)
+    if (tail > 0) {
+        std::uint64_t* block = base_ + fullBlocks * blockSize_;
+        for (std::size_t c = 0; c < ncol_; ++c) {
+            std::fill(block + c * fanOut + tail, block + (c + 1) * fanOut, std::uint64_t(0));
+        }
+    }
+    const std::size_t firstEmpty = fullBlocks + (tail > 0 ? 1 : 0);
+    std::fill(base_ + firstEmpty * blockSize_, base_ + levelNodes_[0] * blockSize_,
+              std::uint64_t(0));
     for (std::size_t c = 0; c < ncol_; ++c) {
         std::uint64_t* const leaves = base_ + c * fanOut;
         double largest = 0.0;
-        auto scan = [&](const std::uint64_t* q, std::size_t m) {
-            for (std::size_t s = 0; s < m; ++s) {
-                double v;
-                std::memcpy(&v, q + s, sizeof v);
-                if (!(v >= 0.0) || !std::isfinite(v)) throwBadValue(c, v);
-                largest = std::max(largest, v);
-            }
-        };
-        for (std::size_t b = 0; b < fullBlocks; ++b) scan(leaves + b * blockSize_, fanOut);
-        if (tail > 0) scan(leaves + fullBlocks * blockSize_, tail);
+        if (largestStaged) {
+            largest = largestStaged[c];
+        } else {
+            auto scan = [&](const std::uint64_t* q, std::size_t m) {
+                for (std::size_t s = 0; s < m; ++s) {
+                    double v;
+                    std::memcpy(&v, q + s, sizeof v);
+                    if (!(v >= 0.0) || !std::isfinite(v)) throwBadValue(c, v);
+                    largest = std::max(largest, v);
+                }
+            };
+            for (std::size_t b = 0; b < fullBlocks; ++b) scan(leaves + b * blockSize_, fanOut);
+            if (tail > 0) scan(leaves + fullBlocks * blockSize_, tail);
+        }
         setExponent(c, exponentFor(largest));
         auto quantiseLeaves = [&](std::uint64_t* q, std::size_t m) {
             for (std::size_t s = 0; s < m; ++s) {

@@ -90,13 +90,13 @@ public:
             return;
         }
         ahead_.valid = false;
-        tree_.reset(nTreeColumns_, capacity);
-        if (nTreeColumns_ == 0) return;
-        for (std::size_t j = 0; j < n; ++j) {
-            basisColumns(particles[j]);
-            for (std::size_t c = 0; c < nTreeColumns_; ++c) tree_.stage(j, c, leaf_[c]);
+        if (nTreeColumns_ == 0) {
+            tree_.reset(0, capacity);
+            return;
         }
-        tree_.finishBuild(n);
+        tree_.build(nTreeColumns_, capacity, n, [this, particles](std::size_t j, double* v) {
+            basisColumns(particles[j], v);
+        });
     }
 
     std::size_t capacity() const { return binned_ ? bins_.capacity() : tree_.capacity(); }
@@ -357,13 +357,14 @@ private:
         }
     }
 
-    //- The tree columns of particle p into leaf_
-    void basisColumns(const Particle& p)
+    //- The tree columns of particle p into leaf_, or into `columns`
+    void basisColumns(const Particle& p) { basisColumns(p, leaf_.data()); }
+    void basisColumns(const Particle& p, double* columns)
     {
         kernel_->basis(p.type, phi_.data());
         for (std::size_t c = 0; c < nTreeColumns_; ++c) {
             const double v = phi_[treeBasis_[c]];
-            leaf_[c] = treeWeighted_[c] ? v * p.weight : v;
+            columns[c] = treeWeighted_[c] ? v * p.weight : v;
         }
     }
 
