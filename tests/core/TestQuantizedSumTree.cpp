@@ -321,3 +321,76 @@ TEST(QuantizedSumTree, RefusesValuesThatAreNotFiniteAndNonNegative)
         EXPECT_THROW(swa->advance(pop, 0.1, rng, stats), std::domain_error) << bad;
     }
 }
+
+TEST(QuantizedSumTree, BuildInFewerPassesIsTheStagedBuild)
+{
+    // build() against reset() + stage() + finishBuild(): the same leaves (also those from n to
+    // the capacity, which build() does not zero first: the fused tree is reused from a bigger
+    // build each time), scales, totals and draws; the same first bad value refused
+    Rng rng(2024);
+    QuantizedSumTree fused;
+    for (std::size_t ncol : {1u, 3u, 5u}) {
+        for (std::size_t n : {1000u, 65u, 64u, 9u, 8u, 7u, 1u, 0u}) {
+            for (std::size_t capacity : {n, n + 5, 3 * n + 20}) {
+                std::vector<std::vector<double>> v(ncol, std::vector<double>(n));
+                for (auto& column : v) {
+                    for (double& x : column) {
+                        x = rng.uniform() < 0.2 ? 0.0 : std::exp(40.0 * rng.uniform() - 20.0);
+                    }
+                }
+                QuantizedSumTree staged;
+                staged.reset(ncol, capacity);
+                for (std::size_t j = 0; j < n; ++j) {
+                    for (std::size_t c = 0; c < ncol; ++c) staged.stage(j, c, v[c][j]);
+                }
+                staged.finishBuild(n);
+                fused.build(ncol, capacity, n, [&](std::size_t j, double* out) {
+                    for (std::size_t c = 0; c < ncol; ++c) out[c] = v[c][j];
+                });
+                const std::string what = std::to_string(ncol) + " columns, n " + std::to_string(n)
+                                         + ", capacity " + std::to_string(capacity);
+                ASSERT_EQ(fused.capacity(), staged.capacity()) << what;
+                ASSERT_EQ(fused.levels(), staged.levels()) << what;
+                for (std::size_t c = 0; c < ncol; ++c) {
+                    ASSERT_EQ(fused.exponent(c), staged.exponent(c)) << what;
+                    ASSERT_EQ(fused.totalInteger(c), staged.totalInteger(c)) << what;
+                    for (std::size_t j = 0; j < staged.capacity(); ++j) {
+                        ASSERT_EQ(fused.leaf(j, c), staged.leaf(j, c)) << what << " leaf " << j;
+                    }
+                    const std::uint64_t total = staged.totalInteger(c);
+                    for (int k = 0; total > 0 && k < 200; ++k) {
+                        const std::uint64_t u = k == 0 ? total - 1 : rng.uniformIndex(total);
+                        ASSERT_EQ(fused.sample(c, u), staged.sample(c, u)) << what << " u " << u;
+                    }
+                }
+            }
+        }
+    }
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (const double bad : {nan, std::numeric_limits<double>::infinity(), -1.0}) {
+        // bad values in columns 2 (leaf 3) and 1 (leaf 6): the scan reports column 1's first
+        auto value = [&](std::size_t j, std::size_t c) {
+            return (j == 3 && c == 2) || (j == 6 && c == 1) ? bad : 1.0 + double(j + c);
+        };
+        QuantizedSumTree staged;
+        staged.reset(3, 16);
+        for (std::size_t j = 0; j < 10; ++j) {
+            for (std::size_t c = 0; c < 3; ++c) staged.stage(j, c, value(j, c));
+        }
+        std::string stagedMessage, fusedMessage;
+        try {
+            staged.finishBuild(10);
+        } catch (const std::domain_error& e) {
+            stagedMessage = e.what();
+        }
+        try {
+            fused.build(3, 16, 10, [&](std::size_t j, double* out) {
+                for (std::size_t c = 0; c < 3; ++c) out[c] = value(j, c);
+            });
+        } catch (const std::domain_error& e) {
+            fusedMessage = e.what();
+        }
+        EXPECT_NE(stagedMessage.find("column 1"), std::string::npos) << stagedMessage;
+        EXPECT_EQ(fusedMessage, stagedMessage) << bad;
+    }
+}

@@ -28,7 +28,7 @@ of workDecomposition's runsPerPart (issue 19, core and case tests); B119 in the 
 tree's refusal of values that are not finite and >= 0; B120-B121 in the arrivals of a decomposed
 run's particle exchange (issue 19, case_parallel); B122-B123 in the tree's ceiling without
 std::ceil and B124 in the report's order of the cells, B125-B126 in the cost fit of cellWork (issue 19,
-fifth session); B127 in the pair rate read from the tree's leaves and B128-B129 in the tree's build block by block (issue 19, sixth session); B130-B136 in the draws made ahead of the event loop B137-B138 in cellWork's ratios and B139-B141 in the ziggurat exponential (issue 19, seventh session); B142-B143 in the big arrays on huge pages (issue 19, eighth session). B14-B17 now
+fifth session); B127 in the pair rate read from the tree's leaves and B128-B129 in the tree's build block by block (issue 19, sixth session); B130-B136 in the draws made ahead of the event loop B137-B138 in cellWork's ratios and B139-B141 in the ziggurat exponential (issue 19, seventh session); B142-B143 in the big arrays on huge pages and B144-B146 in the tree built in fewer passes (issue 19, eighth session). B14-B17 now
 sit in the coagulationPost package (the campaign measured them in the scripts it came from).
 
     bugs.py list                 id, file, targeted tests, what the bug is
@@ -593,6 +593,21 @@ BUGS = {
              "    return bytes > hugePageBytes ? hugePageAlignment : 64;\n",
              "core.LargeArray",
              "big arrays: an array of exactly hugePageBytes left on 64-byte alignment"),
+    "B144": (TREECPP,
+             "            std::fill(block + c * fanOut + tail, block + (c + 1) * fanOut, std::uint64_t(0));\n",
+             "",
+             "core.QuantizedSumTree",
+             "build in fewer passes: the last block's leaves from n on keep an earlier build's values"),
+    "B145": (TREECPP,
+             "    std::fill(base_ + firstEmpty * blockSize_, base_ + levelNodes_[0] * blockSize_,\n",
+             "    std::fill(base_ + firstEmpty * blockSize_, base_ + levelNodes_[0] * blockSize_ / 2,\n",
+             "core.QuantizedSumTree",
+             "build in fewer passes: half the empty blocks past n keep an earlier build's values"),
+    "B146": (TREE,
+             "                good &= (v[c] >= 0.0) & (v[c] <= maxFinite);\n",
+             "                good &= (v[c] <= maxFinite);\n",
+             "core.QuantizedSumTree",
+             "build in fewer passes: a NaN staged as if good (no scan, no error)"),
     "B130": (TREE,
              "            if (lastLeaf_ < d.leaf) start += lastDelta_[c];  // modulo 2^64: exact\n",
              "",
