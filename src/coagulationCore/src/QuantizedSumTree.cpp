@@ -160,24 +160,38 @@ void QuantizedSumTree::finishStaged(std::size_t n, const double* largestStaged)
             if (tail > 0) scan(leaves + fullBlocks * blockSize_, tail);
         }
         setExponent(c, exponentFor(largest));
-        auto quantiseLeaves = [&](std::uint64_t* q, std::size_t m) {
-            for (std::size_t s = 0; s < m; ++s) {
+    }
+    // The leaves quantised block by block, each block's sums written to the level above as
+    // they are made (rebuild() then sums the levels from there up)
+    std::uint64_t* const above = nLevels_ > 1 ? levelBase_[1] : nullptr;
+    if (above) std::fill(above, above + levelNodes_[1] * blockSize_, std::uint64_t(0));
+    for (std::size_t b = 0; b < firstEmpty; ++b) {
+        std::uint64_t* block = base_ + b * blockSize_;
+        for (std::size_t c = 0; c < ncol_; ++c) {
+            std::uint64_t* q = block + c * fanOut;
+            std::uint64_t sum = 0;
+            for (std::size_t s = 0; s < fanOut; ++s) {
                 double v;
                 std::memcpy(&v, q + s, sizeof v);
-                q[s] = quantise(c, v);
+                q[s] = quantise(c, v);  // the zeros past n stay 0
+                sum += q[s];
             }
-        };
-        for (std::size_t b = 0; b < fullBlocks; ++b) quantiseLeaves(leaves + b * blockSize_, fanOut);
-        if (tail > 0) quantiseLeaves(leaves + fullBlocks * blockSize_, tail);
+            if (above) above[(b >> 3) * blockSize_ + c * fanOut + (b & 7)] = sum;
+        }
     }
-    rebuild();
+    rebuildFrom(above ? 1 : 0);
 }
 
 void QuantizedSumTree::rebuild()
 {
+    rebuildFrom(0);
+}
+
+void QuantizedSumTree::rebuildFrom(std::size_t level)
+{
     version_ += 2;
     const std::size_t nLevels = levelOffset_.size();
-    for (std::size_t l = 0; l + 1 < nLevels; ++l) {
+    for (std::size_t l = level; l + 1 < nLevels; ++l) {
         const std::uint64_t* child = base_ + levelOffset_[l];
         std::uint64_t* parent = base_ + levelOffset_[l + 1];
         std::fill(parent, parent + levelNodes_[l + 1] * blockSize_, std::uint64_t(0));

@@ -86,16 +86,13 @@ public:
     {
         layout(nColumns, capacity);
         double largest[maxColumns] = {};
-        double v[maxColumns] = {};
-        bool good = true;
-        for (std::size_t j = 0; j < n; ++j) {
-            values(j, v);
-            std::uint64_t* leaf = base_ + (j >> 3) * blockSize_ + (j & 7);
-            for (std::size_t c = 0; c < ncol_; ++c) {
-                std::memcpy(leaf + c * fanOut, &v[c], sizeof(double));
-                good &= (v[c] >= 0.0) & (v[c] <= maxFinite);
-                largest[c] = v[c] > largest[c] ? v[c] : largest[c];
-            }
+        bool good = false;
+        switch (ncol_) {
+        case 1: good = stageAll<1>(n, values, largest); break;
+        case 2: good = stageAll<2>(n, values, largest); break;
+        case 3: good = stageAll<3>(n, values, largest); break;
+        case 4: good = stageAll<4>(n, values, largest); break;
+        default: good = stageAll<0>(n, values, largest);
         }
         // a value NaN, infinite or negative: finishBuild()'s scan reports the first one
         finishStaged(n, good ? largest : nullptr);
@@ -308,13 +305,38 @@ private:
     //  unsigned one a branch and several
     static double toDouble(std::uint64_t q) { return static_cast<double>(static_cast<std::int64_t>(q)); }
 
+    //- build()'s staging for NC columns (ncol_ when NC is 0): every leaf j < n staged, each
+    //  column's largest value; whether all are finite and >= 0
+    template <std::size_t NC, class Values>
+    bool stageAll(std::size_t n, Values& values, double* largest)
+    {
+        const std::size_t nc = NC > 0 ? NC : ncol_;
+        double v[maxColumns] = {};
+        double smallest[maxColumns] = {};
+        double zero[maxColumns] = {};  // sums of v * 0: NaN once a value is NaN or infinite
+        for (std::size_t j = 0; j < n; ++j) {
+            values(j, v);
+            std::uint64_t* leaf = base_ + (j >> 3) * (nc * fanOut) + (j & 7);
+            for (std::size_t c = 0; c < nc; ++c) {
+                std::memcpy(leaf + c * fanOut, &v[c], sizeof(double));
+                largest[c] = v[c] > largest[c] ? v[c] : largest[c];
+                smallest[c] = v[c] < smallest[c] ? v[c] : smallest[c];
+                zero[c] += v[c] * 0.0;
+            }
+        }
+        bool good = true;
+        for (std::size_t c = 0; c < nc; ++c) good &= smallest[c] >= 0.0 && zero[c] == 0.0;
+        return good;
+    }
+
     //- reset() without the zeros: the levels, their addresses and the array's size
     void layout(std::size_t nColumns, std::size_t capacity);
     //- finishBuild(n) for leaves staged below n (those from n on are set to zero); with
     //  largestStaged, each column's largest value, found as they were staged and all of them
     //  finite and >= 0 (else null: finishBuild()'s scan finds them and reports the first bad)
     void finishStaged(std::size_t n, const double* largestStaged);
-    static constexpr double maxFinite = 1.7976931348623157e308;  // DBL_MAX
+    //- rebuild() of the levels above `level` from it (level 0: all)
+    void rebuildFrom(std::size_t level);
 
     //- The exponent that puts `largest` headroomBits below the leaf limit 2^bits_
     int exponentFor(double largest) const;
