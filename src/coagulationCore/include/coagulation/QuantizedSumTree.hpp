@@ -151,7 +151,7 @@ public:
     std::size_t sample(std::size_t c, std::uint64_t u) const
     {
         std::size_t node = 0;
-        for (std::size_t l = nLevels_; l-- > 0;) step<false>(l, c, u, node, nullptr, 0);
+        walks<false, false>(c, u, node, c, u, node, nullptr, 0);
         return node;
     }
     std::size_t sample(std::size_t c, std::uint64_t u, const void* leafData,
@@ -159,11 +159,9 @@ public:
     {
         std::size_t node = 0;
         if (prefetch_) {
-            fetchingWalk(c, u, node, leafData, leafBytes);
+            walks<true, false>(c, u, node, c, u, node, leafData, leafBytes);
         } else {
-            for (std::size_t l = nLevels_; l-- > 0;) {
-                step<false>(l, c, u, node, nullptr, 0);
-            }
+            walks<false, false>(c, u, node, c, u, node, nullptr, 0);
         }
         return node;
     }
@@ -177,12 +175,9 @@ public:
     {
         std::size_t n1 = 0, n2 = 0;
         if (prefetch_) {
-            fetchingWalks(c1, u1, n1, c2, u2, n2, leafData, leafBytes);
+            walks<true, true>(c1, u1, n1, c2, u2, n2, leafData, leafBytes);
         } else {
-            for (std::size_t l = nLevels_; l-- > 0;) {
-                step<false>(l, c1, u1, n1, nullptr, 0);
-                step<false>(l, c2, u2, n2, nullptr, 0);
-            }
+            walks<false, true>(c1, u1, n1, c2, u2, n2, nullptr, 0);
         }
         j1 = n1;
         j2 = n2;
@@ -212,7 +207,7 @@ public:
     {
         std::uint64_t r1 = u1, r2 = u2;
         std::size_t n1 = 0, n2 = 0;
-        fetchingWalks(c1, r1, n1, c2, r2, n2, leafData, leafBytes);
+        walks<true, true>(c1, r1, n1, c2, r2, n2, leafData, leafBytes);
         d1 = Draw{n1, u1 - r1, version_};  // the walk subtracted the prefix below its leaf
         d2 = Draw{n2, u2 - r2, version_};
     }
@@ -222,7 +217,7 @@ public:
     {
         std::uint64_t r = u;
         std::size_t node = 0;
-        fetchingWalk(c, r, node, leafData, leafBytes);
+        walks<true, false>(c, r, node, c, r, node, leafData, leafBytes);
         d = Draw{node, u - r, version_};
     }
 
@@ -348,60 +343,109 @@ private:
     void coarsen(std::size_t c, int k);
     void setExponent(std::size_t c, int e);
 
-    //- The walk with its prefetches (sample, walk), or two interleaved (samplePair, walkPair):
-    //  node ends at the leaf, u at u minus the prefix below it
+    //- The walks of sample(), walk() (Two false: one walk, c2, u2 and n2 ignored) and of
+    //  samplePair(), walkPair() (Two: two walks interleaved level by level); with Fetch the
+    //  prefetches of big trees. node ends at the leaf, u at u minus the prefix below it.
+    //  Dispatched to steps compiled for the column count (the node block's size a constant,
+    //  as in assign()) and with the levels' prefetches in separate loops: measured, a step
+    //  with the runtime block size and every level's prefetch tests took about 60
+    //  instructions and spilled the two walks' registers.
+    template<bool Fetch, bool Two>
 #if defined(__GNUC__)
     __attribute__((always_inline))
 #endif
-    void fetchingWalk(std::size_t c, std::uint64_t& u, std::size_t& node, const void* leafData,
-                      std::size_t leafBytes) const
+    void walks(std::size_t c1, std::uint64_t& u1, std::size_t& n1, std::size_t c2,
+               std::uint64_t& u2, std::size_t& n2, const void* leafData,
+               std::size_t leafBytes) const
     {
-        for (std::size_t l = nLevels_; l-- > 0;) step<true>(l, c, u, node, leafData, leafBytes);
-    }
-#if defined(__GNUC__)
-    __attribute__((always_inline))
-#endif
-    void fetchingWalks(std::size_t c1, std::uint64_t& u1, std::size_t& n1, std::size_t c2,
-                       std::uint64_t& u2, std::size_t& n2, const void* leafData,
-                       std::size_t leafBytes) const
-    {
-        for (std::size_t l = nLevels_; l-- > 0;) {
-            step<true>(l, c1, u1, n1, leafData, leafBytes);
-            step<true>(l, c2, u2, n2, leafData, leafBytes);
+        switch (ncol_) {
+        case 1: walksFor<1, Fetch, Two>(c1, u1, n1, c2, u2, n2, leafData, leafBytes); break;
+        case 2: walksFor<2, Fetch, Two>(c1, u1, n1, c2, u2, n2, leafData, leafBytes); break;
+        case 3: walksFor<3, Fetch, Two>(c1, u1, n1, c2, u2, n2, leafData, leafBytes); break;
+        case 4: walksFor<4, Fetch, Two>(c1, u1, n1, c2, u2, n2, leafData, leafBytes); break;
+        default: walksFor<0, Fetch, Two>(c1, u1, n1, c2, u2, n2, leafData, leafBytes);
         }
     }
 
-    template<bool PrefetchLeaves>
+    //- walks() for NC columns (ncol_ when NC is 0). With Fetch: the children of the node on
+    //  levels 3 to 1 prefetched, and at the leaves the candidates' records and the leaf block's
+    //  other columns
+    template<std::size_t NC, bool Fetch, bool Two>
+    void walksFor(std::size_t c1, std::uint64_t& u1, std::size_t& n1, std::size_t c2,
+                  std::uint64_t& u2, std::size_t& n2, const void* leafData,
+                  std::size_t leafBytes) const
+    {
+        std::size_t l = nLevels_;
+        if (Fetch) {
+            for (; l > childFetchLevels + 1; --l) {
+                step<NC, false>(l - 1, c1, u1, n1);
+                if (Two) step<NC, false>(l - 1, c2, u2, n2);
+            }
+            for (; l > 1; --l) {
+                step<NC, true>(l - 1, c1, u1, n1);
+                if (Two) step<NC, true>(l - 1, c2, u2, n2);
+            }
+            fetchLeafData<NC>(c1, n1, leafData, leafBytes);
+            step<NC, false>(0, c1, u1, n1);
+            if (Two) {
+                fetchLeafData<NC>(c2, n2, leafData, leafBytes);
+                step<NC, false>(0, c2, u2, n2);
+            }
+        } else {
+            for (; l > 0; --l) {
+                step<NC, false>(l - 1, c1, u1, n1);
+                if (Two) step<NC, false>(l - 1, c2, u2, n2);
+            }
+        }
+    }
+
+    //- The levels above the leaves whose steps prefetch the 8 children of their node
+    static constexpr std::size_t childFetchLevels = 3;
+
+    //- Before the last step from leaf-level node `node`: its 8 candidates' records (leafData:
+    //  one leafBytes-sized record per leaf) and the leaf block's other columns, which the
+    //  caller's acceptance reads (MajorantSampler::pairRateAt)
+    template<std::size_t NC>
 #if defined(__GNUC__)
     __attribute__((always_inline))
 #endif
-    void step(std::size_t l, std::size_t c, std::uint64_t& u, std::size_t& node,
-              const void* leafData, std::size_t leafBytes) const
+    void fetchLeafData(std::size_t c, std::size_t node, const void* leafData,
+                       std::size_t leafBytes) const
     {
+#if defined(__GNUC__)
+        // Addresses as integers: the last node's candidates may lie past the array
+        const std::uintptr_t first =
+            reinterpret_cast<std::uintptr_t>(leafData) + node * fanOut * leafBytes;
+        for (std::size_t b = 0; b < fanOut * leafBytes; b += 64) {
+            __builtin_prefetch(reinterpret_cast<const void*>(first + b));
+        }
+        const std::size_t nc = NC > 0 ? NC : ncol_;
+        const std::uint64_t* block = base_ + node * (nc * fanOut);
+        for (std::size_t k = 0; k < nc; ++k) {
+            if (k != c) __builtin_prefetch(block + k * fanOut);
+        }
+#else
+        (void)c;
+        (void)node;
         (void)leafData;
         (void)leafBytes;
-#if defined(__GNUC__)
-        if (PrefetchLeaves && l == 0) {
-            // Addresses as integers: the last node's candidates may lie past the array
-            const std::uintptr_t first =
-                reinterpret_cast<std::uintptr_t>(leafData) + node * fanOut * leafBytes;
-            for (std::size_t b = 0; b < fanOut * leafBytes; b += 64) {
-                __builtin_prefetch(reinterpret_cast<const void*>(first + b));
-            }
-            // and the leaf block's other columns, which the caller's acceptance reads
-            // (MajorantSampler::pairRateAt)
-            const std::uint64_t* block = base_ + node * blockSize_;
-            for (std::size_t k = 0; k < ncol_; ++k) {
-                if (k != c) __builtin_prefetch(block + k * fanOut);
-            }
-        }
 #endif
-        const std::uint64_t* v = levelBase_[l] + node * blockSize_ + c * fanOut;
+    }
+
+    //- One level of a walk in column c (NC columns, ncol_ when NC is 0); with ChildFetch the
+    //  node's 8 children in the level below prefetched
+    template<std::size_t NC, bool ChildFetch>
 #if defined(__GNUC__)
-        if (prefetch_ && l > 0 && l <= 3) {
-            const std::uint64_t* ch =
-                levelBase_[l - 1] + node * fanOut * blockSize_ + c * fanOut;
-            for (std::size_t k = 0; k < fanOut; ++k) __builtin_prefetch(ch + k * blockSize_);
+    __attribute__((always_inline))
+#endif
+    void step(std::size_t l, std::size_t c, std::uint64_t& u, std::size_t& node) const
+    {
+        const std::size_t bs = NC > 0 ? NC * fanOut : blockSize_;
+        const std::uint64_t* v = levelBase_[l] + node * bs + c * fanOut;
+#if defined(__GNUC__)
+        if (ChildFetch) {
+            const std::uint64_t* ch = levelBase_[l - 1] + node * fanOut * bs + c * fanOut;
+            for (std::size_t k = 0; k < fanOut; ++k) __builtin_prefetch(ch + k * bs);
         }
 #endif
         // u < the node's sum (exact integers), so s < 8 and v[s] > u - p[s] >= 0
