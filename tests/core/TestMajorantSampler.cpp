@@ -359,3 +359,69 @@ INSTANTIATE_TEST_SUITE_P(Stores, MajorantSamplerStore, ::testing::Values(false, 
                          });
 
 } // namespace
+
+namespace {
+
+//- A kernel with nb basis functions phi_b = m^b and the given terms (majorant only: the
+//  sampler's limits are what is tested)
+class PowerBasisKernel : public CoagulationKernel {
+public:
+    PowerBasisKernel(int nb, std::vector<MajorantTerm> terms) : nb_(nb), terms_(std::move(terms)) {}
+    std::string name() const override { return "powerBasis"; }
+    double operator()(const ParticleType& a, const ParticleType& b) const override
+    {
+        return majorant(a, b);
+    }
+    int nBasis() const override { return nb_; }
+    void basis(const ParticleType& z, double* phi) const override
+    {
+        for (int b = 0; b < nb_; ++b) phi[b] = std::pow(z.mass, b);
+    }
+    const std::vector<MajorantTerm>& majorantTerms() const override { return terms_; }
+
+private:
+    int nb_;
+    std::vector<MajorantTerm> terms_;
+};
+
+} // namespace
+
+TEST(MajorantSampler, RefusesKernelsPastItsLimits)
+{
+    // within the limits: 16 basis functions, 16 terms, 16 tree columns (SWA weights the
+    // second factors: columns m^0..m^14 and m^0 w; the last term repeats the first)
+    std::vector<MajorantTerm> terms;
+    for (int b = 0; b < 15; ++b) terms.push_back({1.0, b, 0});
+    terms.push_back({1.0, 0, 0});
+    const PowerBasisKernel within(16, terms);
+    MajorantSampler sampler(true);
+    ASSERT_NO_THROW(sampler.configure(within, "test"));
+    std::vector<Particle> P{{ParticleType{1.5}, 2.0, 0}, {ParticleType{0.5}, 3.0, 1}};
+    sampler.build(P, 2);
+    double expected = 0.0;  // sum over ordered pairs, j1 == j2 included, of Khat(z1, z2) w2
+    for (const Particle& p1 : P) {
+        for (const Particle& p2 : P) expected += within.majorant(p1.type, p2.type) * p2.weight;
+    }
+    EXPECT_NEAR(sampler.rateSum(2), expected, 1e-6 * expected);
+
+    auto message = [](const CoagulationKernel& k) {
+        MajorantSampler s(true);
+        try {
+            s.configure(k, "who");
+        } catch (const std::invalid_argument& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    const std::string basis = message(PowerBasisKernel(17, {{1.0, 16, 0}}));
+    EXPECT_NE(basis.find("who: kernel 'powerBasis' has 17 basis functions"), std::string::npos)
+        << basis;
+    std::vector<MajorantTerm> many(17, MajorantTerm{1.0, 0, 1});
+    const std::string termCount = message(PowerBasisKernel(2, many));
+    EXPECT_NE(termCount.find("17 majorant terms, at most 16 and 16"), std::string::npos)
+        << termCount;
+    std::vector<MajorantTerm> wide;
+    for (int b = 0; b < 9; ++b) wide.push_back({1.0, b, b});  // 9 + 9 tree columns
+    const std::string columns = message(PowerBasisKernel(9, wide));
+    EXPECT_NE(columns.find("needs more than 16 sampler columns"), std::string::npos) << columns;
+}

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 #include "coagulation/MajorantSampler.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -10,7 +11,7 @@ namespace coag {
 
 std::size_t MajorantSampler::columnFor(int b, bool weighted, const std::string& who)
 {
-    for (std::size_t i = 0; i < columns_.size(); ++i) {
+    for (std::size_t i = 0; i < nColumns_; ++i) {
         if (columns_[i].basis == b && columns_[i].weighted == weighted) return i;
     }
     Column col;
@@ -24,12 +25,18 @@ std::size_t MajorantSampler::columnFor(int b, bool weighted, const std::string& 
                                       "positive");
     }
     if (!col.uniform) {
+        if (nTreeColumns_ == QuantizedSumTree::maxColumns) {
+            throw std::invalid_argument(who + ": kernel '" + kernel_->name()
+                                        + "' needs more than "
+                                        + std::to_string(QuantizedSumTree::maxColumns)
+                                        + " sampler columns");
+        }
         col.tree = nTreeColumns_++;
-        treeBasis_.push_back(static_cast<std::size_t>(b));
-        treeWeighted_.push_back(weighted);
+        treeBasis_[col.tree] = static_cast<std::size_t>(b);
+        treeWeighted_[col.tree] = weighted;
     }
-    columns_.push_back(col);
-    return columns_.size() - 1;
+    columns_[nColumns_] = col;  // at most 2 nBasis <= 2 maxBasis columns
+    return nColumns_++;
 }
 
 void MajorantSampler::configure(const CoagulationKernel& kernel, const std::string& who)
@@ -40,17 +47,20 @@ void MajorantSampler::configure(const CoagulationKernel& kernel, const std::stri
     if (nb <= 0 || terms.empty()) {
         throw std::invalid_argument(who + ": kernel '" + kernel.name() + "' has no majorant terms");
     }
-    phi_.assign(static_cast<std::size_t>(nb), 0.0);
-    phi2_.assign(static_cast<std::size_t>(nb), 0.0);
-    kernel.basis(ParticleType{}, phi_.data());
+    if (static_cast<std::size_t>(nb) > maxBasis || terms.size() > maxTerms) {
+        throw std::invalid_argument(who + ": kernel '" + kernel.name() + "' has "
+                                    + std::to_string(nb) + " basis functions and "
+                                    + std::to_string(terms.size())
+                                    + " majorant terms, at most " + std::to_string(maxBasis)
+                                    + " and " + std::to_string(maxTerms));
+    }
+    std::fill_n(phi_, maxBasis, 0.0);
+    std::fill_n(phi2_, maxBasis, 0.0);
+    kernel.basis(ParticleType{}, phi_);
 
-    columns_.clear();
+    nColumns_ = 0;
     nTreeColumns_ = 0;
-    treeBasis_.clear();
-    treeWeighted_.clear();
-    termCoeff_.clear();
-    termFirst_.clear();
-    termSecond_.clear();
+    nTerms_ = 0;
     for (const MajorantTerm& t : terms) {
         if (t.first < 0 || t.first >= nb || t.second < 0 || t.second >= nb || !(t.coeff > 0.0)
             || !std::isfinite(t.coeff)) {
@@ -58,21 +68,15 @@ void MajorantSampler::configure(const CoagulationKernel& kernel, const std::stri
                                         + "' has an invalid majorant term (coeff must be > 0, "
                                           "basis indices in [0, nBasis))");
         }
-        termCoeff_.push_back(t.coeff);
-        termFirst_.push_back(columnFor(t.first, false, who));
-        termSecond_.push_back(columnFor(t.second, weightedSecond_, who));
+        termCoeff_[nTerms_] = t.coeff;
+        termFirst_[nTerms_] = columnFor(t.first, false, who);
+        termSecond_[nTerms_] = columnFor(t.second, weightedSecond_, who);
+        ++nTerms_;
     }
-    if (nTreeColumns_ > QuantizedSumTree::maxColumns) {
-        throw std::invalid_argument(who + ": kernel '" + kernel.name() + "' needs "
-                                    + std::to_string(nTreeColumns_)
-                                    + " sampler columns, at most "
-                                    + std::to_string(QuantizedSumTree::maxColumns));
-    }
-    nTerms_ = termCoeff_.size();
-    termRate_.assign(nTerms_, 0.0);
+    std::fill_n(termRate_, maxTerms, 0.0);
     lastTerm_ = nTerms_ - 1;
-    leaf_.assign(nTreeColumns_, 0.0);
-    columnTotals_.assign(nTreeColumns_, 0.0);
+    std::fill_n(leaf_, QuantizedSumTree::maxColumns, 0.0);
+    std::fill_n(columnTotals_, QuantizedSumTree::maxColumns, 0.0);
     binned_ = false;
 }
 

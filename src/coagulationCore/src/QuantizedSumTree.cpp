@@ -55,11 +55,7 @@ void QuantizedSumTree::layout(std::size_t nColumns, std::size_t capacity)
     base_ = storage_.get();
     nLevels_ = levelOffset_.size();
     for (std::size_t l = 0; l < nLevels_; ++l) levelBase_[l] = base_ + levelOffset_[l];
-    totals_.assign(ncol_, 0);
-    exponent_.assign(ncol_, 0);
-    scale_.assign(ncol_, 1.0);
-    scaleInverse_.assign(ncol_, 1.0);
-    limitValue_.assign(ncol_, 0.0);
+    std::fill_n(totals_, maxColumns, std::uint64_t(0));
     for (std::size_t c = 0; c < ncol_; ++c) setExponent(c, 0);
     prefetch_ = offset * sizeof(std::uint64_t) > prefetchBytes;
 }

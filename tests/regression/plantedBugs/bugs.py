@@ -28,7 +28,7 @@ of workDecomposition's runsPerPart (issue 19, core and case tests); B119 in the 
 tree's refusal of values that are not finite and >= 0; B120-B121 in the arrivals of a decomposed
 run's particle exchange (issue 19, case_parallel); B122-B123 in the tree's ceiling without
 std::ceil and B124 in the report's order of the cells, B125-B126 in the cost fit of cellWork (issue 19,
-fifth session); B127 in the pair rate read from the tree's leaves and B128-B129 in the tree's build block by block (issue 19, sixth session); B130-B136 in the draws made ahead of the event loop B137-B138 in cellWork's ratios and B139-B141 in the ziggurat exponential (issue 19, seventh session); B142-B143 in the big arrays on huge pages and B144-B146 in the tree built in fewer passes (issue 19, eighth session). B14-B17 now
+fifth session); B127 in the pair rate read from the tree's leaves and B128-B129 in the tree's build block by block (issue 19, sixth session); B130-B136 in the draws made ahead of the event loop B137-B138 in cellWork's ratios and B139-B141 in the ziggurat exponential (issue 19, seventh session); B142-B143 in the big arrays on huge pages and B144-B146 in the tree built in fewer passes, B147-B148 in the sampler's fixed arrays (issue 19, eighth session). B14-B17 now
 sit in the coagulationPost package (the campaign measured them in the scripts it came from).
 
     bugs.py list                 id, file, targeted tests, what the bug is
@@ -608,6 +608,16 @@ BUGS = {
              "",
              "core.QuantizedSumTree",
              "build in fewer passes: a NaN or infinite value staged as if good (no scan, no error)"),
+    "B147": ("src/coagulationCore/src/MajorantSampler.cpp",
+             "    if (static_cast<std::size_t>(nb) > maxBasis || terms.size() > maxTerms) {\n",
+             "    if (static_cast<std::size_t>(nb) > maxBasis + 1 || terms.size() > maxTerms) {\n",
+             "core.MajorantSampler",
+             "sampler's fixed arrays: a kernel with one basis function too many taken (writes past phi_)"),
+    "B148": ("src/coagulationCore/src/MajorantSampler.cpp",
+             "        if (nTreeColumns_ == QuantizedSumTree::maxColumns) {\n",
+             "        if (nTreeColumns_ == QuantizedSumTree::maxColumns + 2) {\n",
+             "core.MajorantSampler",
+             "sampler's fixed arrays: tree columns past the limit taken (writes past treeBasis_)"),
     "B130": (TREE,
              "            if (lastLeaf_ < d.leaf) start += lastDelta_[c];  // modulo 2^64: exact\n",
              "",

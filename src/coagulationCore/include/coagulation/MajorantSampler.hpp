@@ -58,6 +58,10 @@ namespace coag {
 //  removeBySwap().
 class MajorantSampler {
 public:
+    //- The most basis functions and majorant terms of a kernel that configure() takes
+    static constexpr std::size_t maxBasis = 16;
+    static constexpr std::size_t maxTerms = 16;
+
     explicit MajorantSampler(bool weightedSecond) : weightedSecond_(weightedSecond) {}
 
     //- Takes the kernel's majorant terms (O(#terms), no allocation once sized). The kernel
@@ -120,7 +124,7 @@ public:
         }
         if (nTreeColumns_ == 0) return;
         basisColumns(p);
-        tree_.assign(j, leaf_.data());
+        tree_.assign(j, leaf_);
     }
 
     //- Particle p appended at index j = n: grows the store (doubling) when full.
@@ -128,7 +132,7 @@ public:
     {
         if (binned_) {
             basisColumns(p);
-            bins_.append(leaf_.data());
+            bins_.append(leaf_);
             return;
         }
         if (j >= tree_.capacity()) tree_.resizeCapacity(2 * tree_.capacity());
@@ -222,8 +226,8 @@ public:
     //  particles, without touching the store; p1 and p2 must be in the store as they are now.
     double pairRate(const Particle& p1, const Particle& p2)
     {
-        kernel_->basis(p1.type, phi_.data());
-        kernel_->basis(p2.type, phi2_.data());
+        kernel_->basis(p1.type, phi_);
+        kernel_->basis(p2.type, phi2_);
         double sum = 0.0;
         for (std::size_t k = 0; k < nTerms_; ++k) {
             sum += termCoeff_[k] * columnValue(columns_[termFirst_[k]], phi_, p1.weight)
@@ -358,10 +362,10 @@ private:
     }
 
     //- The tree columns of particle p into leaf_, or into `columns`
-    void basisColumns(const Particle& p) { basisColumns(p, leaf_.data()); }
+    void basisColumns(const Particle& p) { basisColumns(p, leaf_); }
     void basisColumns(const Particle& p, double* columns)
     {
-        kernel_->basis(p.type, phi_.data());
+        kernel_->basis(p.type, phi_);
         for (std::size_t c = 0; c < nTreeColumns_; ++c) {
             const double v = phi_[treeBasis_[c]];
             columns[c] = treeWeighted_[c] ? v * p.weight : v;
@@ -370,7 +374,7 @@ private:
 
     //- Column col's value for a particle with basis values phi and weight w, as the store
     //  holds it (the same expression as basisColumns(), then the tree's quantisation)
-    double columnValue(const Column& col, const std::vector<double>& phi, double w) const
+    double columnValue(const Column& col, const double* phi, double w) const
     {
         if (col.uniform) return col.constant;
         const double v = phi[static_cast<std::size_t>(col.basis)];
@@ -408,17 +412,20 @@ private:
 
     bool weightedSecond_;
     const CoagulationKernel* kernel_ = nullptr;
-    std::vector<Column> columns_;
+    //- Fixed arrays, not vectors: read on every event without an indirection (measured with
+    //  the tree's per-column arrays: 28 fewer instructions an event at 1e5)
+    Column columns_[2 * maxBasis];
+    std::size_t nColumns_ = 0;
     std::size_t nTreeColumns_ = 0;
-    std::vector<std::size_t> treeBasis_;  // per tree column: its basis function
-    std::vector<char> treeWeighted_;      // per tree column: phi * w
+    std::size_t treeBasis_[QuantizedSumTree::maxColumns] = {};  // per tree column: its basis
+    bool treeWeighted_[QuantizedSumTree::maxColumns] = {};      // per tree column: phi * w
     std::size_t nTerms_ = 0;
-    std::vector<double> termCoeff_;
-    std::vector<std::size_t> termFirst_;   // column of phi_first
-    std::vector<std::size_t> termSecond_;  // column of phi_second (* w for SWA)
-    std::vector<double> termRate_;
-    std::vector<double> phi_;
-    std::vector<double> phi2_;
+    double termCoeff_[maxTerms] = {};
+    std::size_t termFirst_[maxTerms] = {};   // column of phi_first
+    std::size_t termSecond_[maxTerms] = {};  // column of phi_second (* w for SWA)
+    double termRate_[maxTerms] = {};
+    double phi_[maxBasis] = {};
+    double phi2_[maxBasis] = {};
     std::size_t lastTerm_ = 0;       // rateSum(): the last term with a positive rate
     //- lookAhead()'s draws for the next proposeAhead(): its term and the tree columns' walks
     struct Ahead {
@@ -427,8 +434,8 @@ private:
         QuantizedSumTree::Draw first, second;
     };
     Ahead ahead_;
-    std::vector<double> leaf_;          // one particle's tree columns
-    std::vector<double> columnTotals_;  // the store's column totals as of rateSum()
+    double leaf_[QuantizedSumTree::maxColumns] = {};          // one particle's tree columns
+    double columnTotals_[QuantizedSumTree::maxColumns] = {};  // column totals as of rateSum()
     QuantizedSumTree tree_;
     OctaveBins bins_;
     std::size_t binnedFrom_ = defaultBinnedFrom;

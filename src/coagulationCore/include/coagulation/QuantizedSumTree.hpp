@@ -464,8 +464,10 @@ private:
     void assignColumns(std::size_t j, const double* values)
     {
         std::uint64_t delta[NC > 0 ? NC : maxColumns];
-        for (std::size_t c = 0; c < (NC > 0 ? NC : ncol_); ++c) {
-            delta[c] = quantise(c, values[c]) - leaf(j, c);  // modulo 2^64: the adds are exact
+        const std::size_t nc = NC > 0 ? NC : ncol_;
+        const std::uint64_t* leaves = base_ + (j >> 3) * (nc * fanOut) + (j & 7);
+        for (std::size_t c = 0; c < nc; ++c) {
+            delta[c] = quantise(c, values[c]) - leaves[c * fanOut];  // modulo 2^64: exact adds
         }
         addToPath<NC>(j, delta);
     }
@@ -506,11 +508,12 @@ private:
     std::uint64_t* levelBase_[maxLevels] = {};
     std::size_t nLevels_ = 0;
     std::vector<std::size_t> levelNodes_;
-    std::vector<std::uint64_t> totals_;
-    std::vector<int> exponent_;        // per column: the scale 2^e
-    std::vector<double> scale_;        // per column: 2^e (a normal double: setExponent)
-    std::vector<double> scaleInverse_; // per column: 2^-e
-    std::vector<double> limitValue_;   // per column: the largest value that fits, 2^(bits_+e)
+    //- Per column (fixed arrays, not vectors: read on every event without an indirection)
+    std::uint64_t totals_[maxColumns] = {};
+    int exponent_[maxColumns] = {};        // the scale 2^e
+    double scale_[maxColumns] = {};        // 2^e (a normal double: setExponent)
+    double scaleInverse_[maxColumns] = {}; // 2^-e
+    double limitValue_[maxColumns] = {};   // the largest value that fits, 2^(bits_+e)
     //- The array (LargeArray.hpp: 64-byte aligned, on huge pages when big, since a big tree
     //  is walked at random and 4 KiB pages then cost a TLB miss per level)
     struct FreeArray {
