@@ -394,3 +394,32 @@ TEST(QuantizedSumTree, BuildInFewerPassesIsTheStagedBuild)
         EXPECT_EQ(fusedMessage, stagedMessage) << bad;
     }
 }
+
+TEST(QuantizedSumTree, QuantisesToTheCeilingOfTheScaledValue)
+{
+    // At a known scale 2^e, v = t 2^e for t integer, with a quarter or a half (ties of the
+    // rounding inside quantise()), up to 2^52; and values far below the scale
+    QuantizedSumTree tree;
+    tree.reset(1, 8);
+    tree.stage(0, 0, 1.0);
+    tree.finishBuild(1);
+    const double unit = std::ldexp(1.0, tree.exponent(0));
+    const double two52 = std::ldexp(1.0, 52);
+    int checked = 0;
+    for (const double k : {0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 1048577.0, std::ldexp(1.0, 51) - 1.0,
+                           std::ldexp(1.0, 51), two52 - 2.0, two52 - 1.0}) {
+        for (const double f : {0.0, 0.25, 0.5, 0.75}) {
+            const double t = k + f;
+            if (t - k != f || t > two52) continue;  // not a double
+            const double v = t * unit;
+            ASSERT_EQ(tree.quantised(0, v), std::ceil(t) * unit) << "t = " << t;
+            ++checked;
+        }
+    }
+    EXPECT_GE(checked, 30);
+    EXPECT_EQ(tree.quantised(0, two52 * unit), two52 * unit);
+    for (const double tiny : {1e-300, std::numeric_limits<double>::denorm_min(), unit / 3.0}) {
+        EXPECT_EQ(tree.quantised(0, tiny), unit) << tiny;
+    }
+    EXPECT_EQ(tree.quantised(0, 0.0), 0.0);
+}

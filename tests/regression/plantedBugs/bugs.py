@@ -28,7 +28,7 @@ of workDecomposition's runsPerPart (issue 19, core and case tests); B119 in the 
 tree's refusal of values that are not finite and >= 0; B120-B121 in the arrivals of a decomposed
 run's particle exchange (issue 19, case_parallel); B122-B123 in the tree's ceiling without
 std::ceil and B124 in the report's order of the cells, B125-B126 in the cost fit of cellWork (issue 19,
-fifth session); B127 in the pair rate read from the tree's leaves and B128-B129 in the tree's build block by block (issue 19, sixth session); B130-B136 in the draws made ahead of the event loop B137-B138 in cellWork's ratios and B139-B141 in the ziggurat exponential (issue 19, seventh session); B142-B143 in the big arrays on huge pages and B144-B146 in the tree built in fewer passes, B147-B148 in the sampler's fixed arrays (issue 19, eighth session). B14-B17 now
+fifth session); B127 in the pair rate read from the tree's leaves and B128-B129 in the tree's build block by block (issue 19, sixth session); B130-B136 in the draws made ahead of the event loop B137-B138 in cellWork's ratios and B139-B141 in the ziggurat exponential (issue 19, seventh session); B142-B143 in the big arrays on huge pages and B144-B146 in the tree built in fewer passes, B147-B148 in the sampler's fixed arrays, B149 in the ceiling by rounding (issue 19, eighth session). B14-B17 now
 sit in the coagulationPost package (the campaign measured them in the scripts it came from).
 
     bugs.py list                 id, file, targeted tests, what the bug is
@@ -514,8 +514,8 @@ BUGS = {
     # B106 (the double sum tree's assign() association) went with that tree: the quantised
     # tree's sums are exact integers, which B110-B115 plant against
     "B110": (TREE,
-             "        std::uint64_t r = static_cast<std::uint64_t>(q) + std::uint64_t(static_cast<double>(q) < t);\n",
-             "        std::uint64_t r = static_cast<std::uint64_t>(q);\n",
+             "        std::uint64_t r = bits - twoTo52Bits + std::uint64_t(big - twoTo52 < t);  // the ceiling\n",
+             "        std::uint64_t r = bits - twoTo52Bits;  // the ceiling\n",
              SAMPLERTESTS,
              "quantised tree: a value rounded down to its scale, so Q may be below v (no majorant)"),
     "B124": ("src/python/coagulationPost/report.py",
@@ -534,8 +534,8 @@ BUGS = {
              "core.CostFit",
              "cost fit: the residuals' sum of squares for their variance (errors not shrinking with n)"),
     "B122": (TREE,
-             "        std::uint64_t r = static_cast<std::uint64_t>(q) + std::uint64_t(static_cast<double>(q) < t);\n",
-             "        std::uint64_t r = static_cast<std::uint64_t>(q) + std::uint64_t(static_cast<double>(q) <= t);\n",
+             "        std::uint64_t r = bits - twoTo52Bits + std::uint64_t(big - twoTo52 < t);  // the ceiling\n",
+             "        std::uint64_t r = bits - twoTo52Bits + std::uint64_t(big - twoTo52 <= t);  // the ceiling\n",
              SAMPLERTESTS,
              "quantised tree: a whole quotient rounded up one unit (the ceiling without std::ceil)"),
     "B123": (TREE,
@@ -618,6 +618,11 @@ BUGS = {
              "        if (nTreeColumns_ == QuantizedSumTree::maxColumns + 2) {\n",
              "core.MajorantSampler",
              "sampler's fixed arrays: tree columns past the limit taken (writes past treeBasis_)"),
+    "B149": (TREE,
+             "        std::uint64_t r = bits - twoTo52Bits + std::uint64_t(big - twoTo52 < t);  // the ceiling\n",
+             "        std::uint64_t r = bits - twoTo52Bits + std::uint64_t(big - twoTo52 < v);  // the ceiling\n",
+             "core.QuantizedSumTree",
+             "quantised tree: the ceiling's test against the unscaled value v instead of the quotient t"),
     "B130": (TREE,
              "            if (lastLeaf_ < d.leaf) start += lastDelta_[c];  // modulo 2^64: exact\n",
              "",
