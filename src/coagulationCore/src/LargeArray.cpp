@@ -30,7 +30,7 @@ std::size_t roundedBytes(std::size_t bytes)
 void* allocate(std::size_t bytes)
 {
     const std::size_t rounded = roundedBytes(bytes);
-    const std::size_t align = alignmentFor(rounded);
+    const std::size_t align = alignmentFor(bytes);  // as roundedBytes() took it
     void* p = std::aligned_alloc(align, rounded);
     if (!p) throw std::bad_alloc();
 #if defined(__linux__) && defined(MADV_HUGEPAGE)

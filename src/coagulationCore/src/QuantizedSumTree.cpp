@@ -8,7 +8,6 @@
 #include <stdexcept>
 #include <string>
 
-
 namespace coag {
 
 void QuantizedSumTree::reset(std::size_t nColumns, std::size_t capacity)
