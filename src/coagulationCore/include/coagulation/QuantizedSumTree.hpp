@@ -236,7 +236,9 @@ public:
         std::uint64_t start = d.start;
         if (d.version != version_) {
             if (d.version + 1 != version_) return false;
-            if (lastLeaf_ < d.leaf) start += lastDelta_[c];  // modulo 2^64: exact
+            // modulo 2^64: exact; masked, not branched on (the changed leaf lies before the
+            // draw's about half the time, at random: measured, a mispredicted branch a draw)
+            start += lastDelta_[c] & (std::uint64_t(0) - std::uint64_t(lastLeaf_ < d.leaf));
         }
         std::size_t k = d.leaf;
         for (std::size_t steps = 0;; ++steps) {
@@ -386,27 +388,37 @@ private:
                   std::uint64_t& u2, std::size_t& n2, const void* leafData,
                   std::size_t leafBytes) const
     {
+        // In locals: through the references, which may alias the tree's words, every step
+        // stored and reloaded them (store forwarding on the walk's chain of dependences)
+        std::uint64_t r1 = u1, r2 = Two ? u2 : 0;
+        std::size_t k1 = n1, k2 = Two ? n2 : 0;
         std::size_t l = nLevels_;
         if (Fetch) {
             for (; l > childFetchLevels + 1; --l) {
-                step<NC, false>(l - 1, c1, u1, n1);
-                if (Two) step<NC, false>(l - 1, c2, u2, n2);
+                step<NC, false>(l - 1, c1, r1, k1);
+                if (Two) step<NC, false>(l - 1, c2, r2, k2);
             }
             for (; l > 1; --l) {
-                step<NC, true>(l - 1, c1, u1, n1);
-                if (Two) step<NC, true>(l - 1, c2, u2, n2);
+                step<NC, true>(l - 1, c1, r1, k1);
+                if (Two) step<NC, true>(l - 1, c2, r2, k2);
             }
-            fetchLeafData<NC>(c1, n1, leafData, leafBytes);
-            step<NC, false>(0, c1, u1, n1);
+            fetchLeafData<NC>(c1, k1, leafData, leafBytes);
+            step<NC, false>(0, c1, r1, k1);
             if (Two) {
-                fetchLeafData<NC>(c2, n2, leafData, leafBytes);
-                step<NC, false>(0, c2, u2, n2);
+                fetchLeafData<NC>(c2, k2, leafData, leafBytes);
+                step<NC, false>(0, c2, r2, k2);
             }
         } else {
             for (; l > 0; --l) {
-                step<NC, false>(l - 1, c1, u1, n1);
-                if (Two) step<NC, false>(l - 1, c2, u2, n2);
+                step<NC, false>(l - 1, c1, r1, k1);
+                if (Two) step<NC, false>(l - 1, c2, r2, k2);
             }
+        }
+        u1 = r1;
+        n1 = k1;
+        if (Two) {
+            u2 = r2;
+            n2 = k2;
         }
     }
 
