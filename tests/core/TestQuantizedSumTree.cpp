@@ -163,9 +163,10 @@ TEST(QuantizedSumTree, EachLeafOwnsExactlyItsRangeOfDraws)
 //- A draw made ahead (walk, walkPair) and taken later by drawNear() is the walk's draw for
 //  the later integer, after no change or one assign() (of a leaf before, at or after the
 //  drawn one, to a larger, smaller or zero value): drawNear either declines or gives
-//  sample(c, u) exactly, for integers near and far from the predicted one; it takes most of
-//  the near ones; and it declines after two changes, a removal by swap and a coarsening.
-//  The Draw's interval holds its integer.
+//  sample(c, u) exactly, for integers near and far from the predicted one (in the Draw's
+//  block of 8 leaves and outside it, on both sides); it takes most of the near ones; and it
+//  declines after two changes, a removal by swap and a coarsening. The Draw is the walk's
+//  block: its first leaf, and where that leaf's interval begins (the sum of the leaves before).
 TEST(QuantizedSumTree, DrawsMadeAheadAreTheWalksDrawsOrDeclined)
 {
     for (const std::size_t n : {std::size_t(5), std::size_t(300), std::size_t(20000)}) {
@@ -182,6 +183,7 @@ TEST(QuantizedSumTree, DrawsMadeAheadAreTheWalksDrawsOrDeclined)
         tree.finishBuild(n);
         std::vector<double> leafData(tree.capacity());
         std::size_t tried = 0, taken = 0, nearTried = 0, nearTaken = 0;
+        std::size_t takenLeft = 0, takenRight = 0;  // outside the Draw's block
         for (int round = 0; round < 400; ++round) {
             for (std::size_t c = 0; c < 3; ++c) {
                 if (tree.totalInteger(c) == 0) {  // zeroed below: refill one leaf
@@ -197,12 +199,15 @@ TEST(QuantizedSumTree, DrawsMadeAheadAreTheWalksDrawsOrDeclined)
             QuantizedSumTree::Draw d1, d2, d3;
             tree.walkPair(c1, p1, c2, p2, leafData.data(), sizeof(double), d1, d2);
             tree.walk(c1, p1, leafData.data(), sizeof(double), d3);
-            ASSERT_EQ(d1.leaf, tree.sample(c1, p1));
-            ASSERT_EQ(d2.leaf, tree.sample(c2, p2));
+            ASSERT_EQ(d1.leaf, tree.sample(c1, p1) / 8 * 8);
+            ASSERT_EQ(d2.leaf, tree.sample(c2, p2) / 8 * 8);
             ASSERT_EQ(d3.leaf, d1.leaf);
             ASSERT_EQ(d3.start, d1.start);
-            ASSERT_LE(d1.start, p1);
-            ASSERT_LT(p1 - d1.start, tree.leaf(d1.leaf, c1));
+            for (const auto& [c, d] : {std::pair{c1, d1}, std::pair{c2, d2}}) {
+                std::uint64_t below = 0;
+                for (std::size_t k = 0; k < d.leaf; ++k) below += tree.leaf(k, c);
+                ASSERT_EQ(d.start, below);
+            }
             // no change, or one change of a leaf near the drawn one or anywhere
             const int kind = round % 4;
             if (kind > 0) {
@@ -232,6 +237,8 @@ TEST(QuantizedSumTree, DrawsMadeAheadAreTheWalksDrawsOrDeclined)
                     if (k < 6) ++nearTried;
                     if (ok) {
                         ASSERT_EQ(j, tree.sample(c, u)) << n << " round " << round;
+                        if (j < d.leaf) ++takenLeft;
+                        if (j >= d.leaf + 8) ++takenRight;
                         ++taken;
                         if (k < 6) ++nearTaken;
                     } else {
@@ -242,6 +249,10 @@ TEST(QuantizedSumTree, DrawsMadeAheadAreTheWalksDrawsOrDeclined)
         }
         EXPECT_GT(nearTaken, nearTried * 9 / 10) << n;
         EXPECT_GT(taken, 0u);
+        if (n > 8) {
+            EXPECT_GT(takenLeft, 0u) << n;
+            EXPECT_GT(takenRight, 0u) << n;
+        }
         // after two changes, a removal by swap or a coarsening: declined
         const std::uint64_t p = rng.uniformIndex(tree.totalInteger(0));
         QuantizedSumTree::Draw d;

@@ -209,9 +209,10 @@ public:
     {
         std::uint64_t r1 = u1, r2 = u2;
         std::size_t n1 = 0, n2 = 0;
-        walks<true, true>(c1, r1, n1, c2, r2, n2, leafData, leafBytes);
-        d1 = Draw{n1, u1 - r1, version_};  // the walk subtracted the prefix below its leaf
-        d2 = Draw{n2, u2 - r2, version_};
+        walks<true, true, true>(c1, r1, n1, c2, r2, n2, leafData, leafBytes);
+        // the walks subtracted the prefix below their blocks of leaves
+        d1 = Draw{n1 * fanOut, u1 - r1, version_};
+        d2 = Draw{n2 * fanOut, u2 - r2, version_};
     }
     //- The walk of sample() (its prefetches included) for u, kept as a Draw
     void walk(std::size_t c, std::uint64_t u, const void* leafData, std::size_t leafBytes,
@@ -219,17 +220,22 @@ public:
     {
         std::uint64_t r = u;
         std::size_t node = 0;
-        walks<true, false>(c, r, node, c, r, node, leafData, leafBytes);
-        d = Draw{node, u - r, version_};
+        walks<true, false, true>(c, r, node, c, r, node, leafData, leafBytes);
+        d = Draw{node * fanOut, u - r, version_};
     }
 
-    //- sample(c, u) from a Draw d made earlier, without a walk: true and j = the leaf whose
-    //  interval holds u, when the tree is as it was at d or changed since by one assign() and
-    //  that leaf is at most maxDrawSteps intervals from d's; false (j untouched) otherwise.
-    //  d's interval start moves by the change's delta when the changed leaf lies before it;
-    //  the search then steps over the neighbouring intervals with the leaves' q as they are
-    //  now. Exact: the intervals of the leaves partition {0, ..., total - 1} in the order of
-    //  j, and a walk ends in the leaf whose interval holds u.
+    //- sample(c, u) from a Draw d made earlier by walk() or walkPair(), without a walk: true
+    //  and j = the leaf whose interval holds u, when the tree is as it was at d or changed
+    //  since by one assign() and that leaf is in d's block of 8 leaves or at most
+    //  maxDrawSteps intervals from its ends; false (j untouched) otherwise. d's start (where
+    //  the block's first interval began) moves by the change's delta when the changed leaf
+    //  lies before it; the last step of a walk then finds u in the block from its leaves as
+    //  they are now, and a u outside the block steps over the neighbouring intervals. Exact:
+    //  the intervals of the leaves partition {0, ..., total - 1} in the order of j, and a
+    //  walk ends in the leaf whose interval holds u.
+    //  (The draws made ahead end at the block, not the leaf: the walk made ahead then loads
+    //  no leaf line, which it only prefetches, so that its cache miss does not hold up the
+    //  work after it; measured, issue 19, ninth session.)
     static constexpr std::size_t maxDrawSteps = 8;
     bool drawNear(std::size_t c, const Draw& d, std::uint64_t u, std::size_t& j) const
     {
@@ -240,7 +246,26 @@ public:
             // draw's about half the time, at random: measured, a mispredicted branch a draw)
             start += lastDelta_[c] & (std::uint64_t(0) - std::uint64_t(lastLeaf_ < d.leaf));
         }
-        std::size_t k = d.leaf;
+        // the walk's last step in d's block; u outside the block (below: r wraps to above
+        // 2^63; above: past the block's sum) ends in its last leaf with r >= that leaf's q
+        std::uint64_t r = u - start;
+        std::size_t k = d.leaf / fanOut;
+        switch (ncol_) {
+        case 1: step<1, false>(0, c, r, k); break;
+        case 2: step<2, false>(0, c, r, k); break;
+        case 3: step<3, false>(0, c, r, k); break;
+        case 4: step<4, false>(0, c, r, k); break;
+        default: step<0, false>(0, c, r, k);
+        }
+        if (r < leaf(k, c)) {
+            j = k;
+            return true;
+        }
+        if (u < start) {
+            k = d.leaf;  // from the block's first interval, to the left
+        } else {
+            start = u - r;  // from its last interval (k), to the right
+        }
         for (std::size_t steps = 0;; ++steps) {
             if (u < start) {
                 if (k == 0 || steps == maxDrawSteps) return false;
@@ -363,7 +388,7 @@ private:
     //  as in assign()) and with the levels' prefetches in separate loops: measured, a step
     //  with the runtime block size and every level's prefetch tests took about 60
     //  instructions and spilled the two walks' registers.
-    template<bool Fetch, bool Two>
+    template<bool Fetch, bool Two, bool ToBlock = false>
 #if defined(__GNUC__)
     __attribute__((always_inline))
 #endif
@@ -372,18 +397,18 @@ private:
                std::size_t leafBytes) const
     {
         switch (ncol_) {
-        case 1: walksFor<1, Fetch, Two>(c1, u1, n1, c2, u2, n2, leafData, leafBytes); break;
-        case 2: walksFor<2, Fetch, Two>(c1, u1, n1, c2, u2, n2, leafData, leafBytes); break;
-        case 3: walksFor<3, Fetch, Two>(c1, u1, n1, c2, u2, n2, leafData, leafBytes); break;
-        case 4: walksFor<4, Fetch, Two>(c1, u1, n1, c2, u2, n2, leafData, leafBytes); break;
-        default: walksFor<0, Fetch, Two>(c1, u1, n1, c2, u2, n2, leafData, leafBytes);
+        case 1: walksFor<1, Fetch, Two, ToBlock>(c1, u1, n1, c2, u2, n2, leafData, leafBytes); break;
+        case 2: walksFor<2, Fetch, Two, ToBlock>(c1, u1, n1, c2, u2, n2, leafData, leafBytes); break;
+        case 3: walksFor<3, Fetch, Two, ToBlock>(c1, u1, n1, c2, u2, n2, leafData, leafBytes); break;
+        case 4: walksFor<4, Fetch, Two, ToBlock>(c1, u1, n1, c2, u2, n2, leafData, leafBytes); break;
+        default: walksFor<0, Fetch, Two, ToBlock>(c1, u1, n1, c2, u2, n2, leafData, leafBytes);
         }
     }
 
     //- walks() for NC columns (ncol_ when NC is 0). With Fetch: the children of the node on
     //  levels 3 to 1 prefetched, and at the leaves the candidates' records and the leaf block's
     //  other columns
-    template<std::size_t NC, bool Fetch, bool Two>
+    template<std::size_t NC, bool Fetch, bool Two, bool ToBlock>
     void walksFor(std::size_t c1, std::uint64_t& u1, std::size_t& n1, std::size_t c2,
                   std::uint64_t& u2, std::size_t& n2, const void* leafData,
                   std::size_t leafBytes) const
@@ -403,10 +428,10 @@ private:
                 if (Two) step<NC, true>(l - 1, c2, r2, k2);
             }
             fetchLeafData<NC>(c1, k1, leafData, leafBytes);
-            step<NC, false>(0, c1, r1, k1);
+            if (!ToBlock) step<NC, false>(0, c1, r1, k1);
             if (Two) {
                 fetchLeafData<NC>(c2, k2, leafData, leafBytes);
-                step<NC, false>(0, c2, r2, k2);
+                if (!ToBlock) step<NC, false>(0, c2, r2, k2);
             }
         } else {
             for (; l > 0; --l) {
