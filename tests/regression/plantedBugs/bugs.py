@@ -28,7 +28,7 @@ of workDecomposition's runsPerPart (issue 19, core and case tests); B119 in the 
 tree's refusal of values that are not finite and >= 0; B120-B121 in the arrivals of a decomposed
 run's particle exchange (issue 19, case_parallel); B122-B123 in the tree's ceiling without
 std::ceil and B124 in the report's order of the cells, B125-B126 in the cost fit of cellWork (issue 19,
-fifth session); B127 in the pair rate read from the tree's leaves and B128-B129 in the tree's build block by block (issue 19, sixth session); B130-B136 in the draws made ahead of the event loop B137-B138 in cellWork's ratios and B139-B141 in the ziggurat exponential (issue 19, seventh session); B142-B143 in the big arrays on huge pages and B144-B146 in the tree built in fewer passes, B147-B148 in the sampler's fixed arrays, B149 in the ceiling by rounding (issue 19, eighth session); B150 in the acceptance without a branch (issue 19, ninth session). B14-B17 now
+fifth session); B127 in the pair rate read from the tree's leaves and B128-B129 in the tree's build block by block (issue 19, sixth session); B130-B136 in the draws made ahead of the event loop B137-B138 in cellWork's ratios and B139-B141 in the ziggurat exponential (issue 19, seventh session); B142-B143 in the big arrays on huge pages and B144-B146 in the tree built in fewer passes, B147-B148 in the sampler's fixed arrays, B149 in the ceiling by rounding (issue 19, eighth session); B150 in the acceptance without a branch, B151-B153 in the draws made ahead to the block (issue 19, ninth session). B14-B17 now
 sit in the coagulationPost package (the campaign measured them in the scripts it came from).
 
     bugs.py list                 id, file, targeted tests, what the bug is
@@ -628,6 +628,21 @@ BUGS = {
              "        return static_cast<bool>(int(uAccept * target < proposed) | int(target >= proposed));\n",
              "core.Algorithms/(CellAlgorithmTest|ReferenceKernelTest)",
              "acceptance without a branch: the ratio's two rates swapped (nearly every proposal accepted)"),
+    "B151": (TREE,
+             "            k = d.leaf;  // from the block's first interval, to the left\n",
+             "            k = d.leaf + 1;  // from the block's first interval, to the left\n",
+             SAMPLERTESTS + "|core.SwaLookahead",
+             "draws made ahead to the block: a u below the block scanned from its second leaf with the first's start"),
+    "B152": (TREE,
+             "        if (r < leaf(k, c)) {\n            j = k;\n            return true;\n        }\n",
+             "        if (r <= leaf(k, c)) {\n            j = k;\n            return true;\n        }\n",
+             SAMPLERTESTS + "|core.SwaLookahead",
+             "draws made ahead to the block: the first integer past the block taken by its last leaf"),
+    "B153": (TREE,
+             "        d1 = Draw{n1 * fanOut, u1 - r1, version_};\n",
+             "        d1 = Draw{n1 * fanOut + 1, u1 - r1, version_};\n",
+             SAMPLERTESTS + "|core.SwaLookahead",
+             "draws made ahead to the block: the pair's first Draw names the block's second leaf with the first's start"),
     "B130": (TREE,
              "            start += lastDelta_[c] & (std::uint64_t(0) - std::uint64_t(lastLeaf_ < d.leaf));\n",
              "",
