@@ -204,9 +204,17 @@ TEST(QuantizedSumTree, DrawsMadeAheadAreTheWalksDrawsOrDeclined)
             ASSERT_EQ(d3.leaf, d1.leaf);
             ASSERT_EQ(d3.start, d1.start);
             for (const auto& [c, d] : {std::pair{c1, d1}, std::pair{c2, d2}}) {
-                std::uint64_t below = 0;
+                std::uint64_t below = 0, block = 0;
                 for (std::size_t k = 0; k < d.leaf; ++k) below += tree.leaf(k, c);
+                for (std::size_t k = d.leaf; k < d.leaf + 8; ++k) block += tree.leaf(k, c);
                 ASSERT_EQ(d.start, below);
+                // the integers at the block's ends, inside and out
+                for (const std::uint64_t u : {below - 1, below, below + block - 1, below + block}) {
+                    if (u >= tree.totalInteger(c)) continue;  // also below - 1 for below = 0
+                    std::size_t j = n + 7;
+                    ASSERT_TRUE(tree.drawNear(c, d, u, j));
+                    ASSERT_EQ(j, tree.sample(c, u)) << n << " round " << round << " u " << u;
+                }
             }
             // no change, or one change of a leaf near the drawn one or anywhere
             const int kind = round % 4;
