@@ -424,13 +424,13 @@ private:
                 if (Two) step<NC, false>(l - 1, c2, r2, k2);
             }
             for (; l > 1; --l) {
-                step<NC, true>(l - 1, c1, r1, k1);
-                if (Two) step<NC, true>(l - 1, c2, r2, k2);
+                step<NC, !ToBlock>(l - 1, c1, r1, k1);
+                if (Two) step<NC, !ToBlock>(l - 1, c2, r2, k2);
             }
-            fetchLeafData<NC>(c1, k1, leafData, leafBytes);
+            fetchLeafData<NC, ToBlock>(c1, k1, leafData, leafBytes);
             if (!ToBlock) step<NC, false>(0, c1, r1, k1);
             if (Two) {
-                fetchLeafData<NC>(c2, k2, leafData, leafBytes);
+                fetchLeafData<NC, ToBlock>(c2, k2, leafData, leafBytes);
                 if (!ToBlock) step<NC, false>(0, c2, r2, k2);
             }
         } else {
@@ -453,7 +453,7 @@ private:
     //- Before the last step from leaf-level node `node`: its 8 candidates' records (leafData:
     //  one leafBytes-sized record per leaf) and the leaf block's other columns, which the
     //  caller's acceptance reads (MajorantSampler::pairRateAt)
-    template<std::size_t NC>
+    template<std::size_t NC, bool ToBlock>
 #if defined(__GNUC__)
     __attribute__((always_inline))
 #endif
@@ -470,7 +470,7 @@ private:
         const std::size_t nc = NC > 0 ? NC : ncol_;
         const std::uint64_t* block = base_ + node * (nc * fanOut);
         for (std::size_t k = 0; k < nc; ++k) {
-            if (k != c) __builtin_prefetch(block + k * fanOut);
+            if (ToBlock || k != c) __builtin_prefetch(block + k * fanOut);
         }
 #else
         (void)c;
