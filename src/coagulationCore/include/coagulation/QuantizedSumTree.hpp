@@ -194,13 +194,13 @@ public:
         std::uint64_t version = 0;
     };
 
-    //- Whether draws made ahead pay in this tree: it is bigger than the L2 cache (measured, SWA
-    //  additive on the issue-19 machine, 2 MiB of L2 a core, same binary on and off: 0-30 %
-    //  fewer ns per event at N = 1e6 with a 27 MB tree, the more the slower the memory at the
-    //  time. Since the eighth session's cuts of the loop's instructions, medians of 6 ABBA
-    //  runs: 9 % fewer at 3e5 (8.2 MB), 3.6 % fewer at 1e5 (2.7 MB), but 2 % more at 5e4
-    //  (1.4 MB) and 8-10 % more at 3e4 and 1e4, where the walk misses little and the extra
-    //  instructions cost more than they hide)
+    //- Whether draws made ahead pay in this tree: it is bigger than 1.25 MiB, well past half
+    //  the L2 cache of a core (measured, SWA additive on the issue-19 machine, 2 MiB of L2 a
+    //  core, the same binary with the threshold lower and at 2 MiB, medians of 4-6 ABBA
+    //  rounds, after the ninth session's draws to the block: 3 % fewer ns per event at
+    //  N = 5e4 (1.4 MB tree) and 7 % at 7e4 (1.9 MB); 2 % more at 4e4 (1.1 MB), 8 % more at
+    //  2e4 and 3e4 (0.55, 0.82 MB), where the walk misses little and the extra instructions
+    //  cost more than they hide; before that change the threshold was 2 MiB)
     bool lookaheadPays() const { return memoryBytes() >= lookaheadBytes; }
 
     //- The walks of samplePair() (its prefetches included) for u1 and u2, kept as Draws
@@ -576,7 +576,7 @@ private:
     static constexpr std::size_t prefetchBytes = 512 * 1024;
     bool prefetch_ = false;
     //- lookaheadPays() from this size of the tree array
-    static constexpr std::size_t lookaheadBytes = 2 * 1024 * 1024;
+    static constexpr std::size_t lookaheadBytes = 1280 * 1024;
 
     //- Changes counted for drawNear(): one per addToPath(), whose leaf and deltas are kept;
     //  two for any other change of leaves or scales (reset, rebuild, resizeCapacity), which
