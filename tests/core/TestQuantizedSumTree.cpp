@@ -283,6 +283,90 @@ TEST(QuantizedSumTree, DrawsMadeAheadAreTheWalksDrawsOrDeclined)
     }
 }
 
+//- Draws made in two halves (walkToNode, walkPairToNode, then finishToBlock after no change
+//  or one assign()) are Draws as walk() makes them: the block's first leaf, inside the tree,
+//  and where its interval begins now; drawNear() with them gives sample(c, u) exactly; and
+//  finishToBlock declines after two changes. Integers drawn at the end of the column, whose
+//  last level-1 node has fewer than 8 blocks, are then moved past the column's total by the
+//  change (the node's missing blocks must not be named).
+TEST(QuantizedSumTree, DrawsMadeInTwoHalvesAreWalksDraws)
+{
+    for (const std::size_t n : {std::size_t(9), std::size_t(300), std::size_t(5000),
+                                std::size_t(20000)}) {
+        QuantizedSumTree tree;
+        tree.reset(3, n);
+        Rng rng(77 + n);
+        std::vector<double> v(3 * n);
+        for (std::size_t j = 0; j < n; ++j) {
+            for (std::size_t c = 0; c < 3; ++c) {
+                v[3 * j + c] = rng.exponential(1.0);
+                tree.stage(j, c, v[3 * j + c]);
+            }
+        }
+        tree.finishBuild(n);
+        ASSERT_GE(tree.levels(), 2u) << "level 1 exists";
+        std::vector<double> leafData(tree.capacity());
+        std::size_t finished = 0, declined = 0, pastTotal = 0;
+        for (int round = 0; round < 3000; ++round) {
+            const std::size_t c1 = rng.uniformIndex(3), c2 = rng.uniformIndex(3);
+            // every fourth integer from the column's last few intervals
+            const std::uint64_t t1 = tree.totalInteger(c1);
+            const std::uint64_t p1 = round % 4 == 0 ? t1 - 1 - rng.uniformIndex(t1 / n + 1)
+                                                    : rng.uniformIndex(t1);
+            const std::uint64_t p2 = rng.uniformIndex(tree.totalInteger(c2));
+            QuantizedSumTree::Partial h1, h2, h3;
+            tree.walkPairToNode(c1, p1, c2, p2, h1, h2);
+            tree.walkToNode(c1, p1, h3);
+            ASSERT_EQ(h3.node, h1.node);
+            ASSERT_EQ(h3.start, h1.start);
+            const int kind = round % 3;  // no change, one, or two
+            for (int k = 0; k < kind; ++k) {
+                // the last leaves shrink as often as any: integers past the total follow
+                const std::size_t j = round % 2 ? n - 1 - rng.uniformIndex(std::min<std::size_t>(n, 8))
+                                                : rng.uniformIndex(n);
+                const double factor = 0.25 * rng.uniform() + (round % 2 ? 0.0 : 0.5 + rng.uniform());
+                double values[3];
+                for (std::size_t c = 0; c < 3; ++c) values[c] = v[3 * j + c] * factor;
+                tree.assign(j, values);
+                for (std::size_t c = 0; c < 3; ++c) v[3 * j + c] = values[c];
+            }
+            for (const auto& [c, h, p] : {std::tuple{c1, h1, p1}, std::tuple{c2, h2, p2}}) {
+                QuantizedSumTree::Draw d;
+                const bool ok = tree.finishToBlock(c, h, leafData.data(), sizeof(double), d);
+                if (kind == 2) {
+                    EXPECT_FALSE(ok);
+                    continue;
+                }
+                if (p >= tree.totalInteger(c)) ++pastTotal;
+                if (!ok) {
+                    ++declined;
+                    continue;
+                }
+                ++finished;
+                ASSERT_EQ(d.leaf % 8, 0u);
+                ASSERT_LT(d.leaf, tree.capacity()) << n << " round " << round;
+                std::uint64_t below = 0;
+                for (std::size_t k = 0; k < d.leaf; ++k) below += tree.leaf(k, c);
+                ASSERT_EQ(d.start, below) << n << " round " << round;
+                const std::uint64_t total = tree.totalInteger(c);
+                for (int k = 0; k < 4; ++k) {
+                    const std::uint64_t spread = total / n + 2;
+                    const std::uint64_t offset = rng.uniformIndex(2 * spread);
+                    std::uint64_t u = p + offset >= spread ? p + offset - spread : 0;
+                    if (u >= total) u = total - 1;
+                    std::size_t j = n + 7;
+                    if (tree.drawNear(c, d, u, j)) {
+                        ASSERT_EQ(j, tree.sample(c, u)) << n << " round " << round;
+                    }
+                }
+            }
+        }
+        EXPECT_GT(finished, 1000u) << n;
+        EXPECT_GT(pastTotal, 10u) << n << ": integers moved past the total";
+        EXPECT_LT(declined, finished / 10) << n;
+    }
+}
+
 //- A column whose leaves are all zero takes its scale from the next value, whatever the
 //  scale before; values beyond the scales' range are refused
 TEST(QuantizedSumTree, EmptyColumnTakesItsScaleAfresh)

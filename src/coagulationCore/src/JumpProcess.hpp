@@ -239,7 +239,7 @@ void JumpProcess<Jump>::advance(CellPopulation& pop, const CoagulationKernel& ke
     P.reserve(capacity);
     sampler_.build(P, capacity);
 
-    if (Jump::lookahead && lookahead_ && sampler_.lookaheadPays()) {
+    if (Jump::lookahead && lookahead_ && sampler_.twoAheadPays()) {
         events<true>(pop, kernel, inceptionRate, w, dt, rng, stats);
     } else {
         events<false>(pop, kernel, inceptionRate, w, dt, rng, stats);
@@ -294,16 +294,20 @@ void JumpProcess<Jump>::events(CellPopulation& pop, const CoagulationKernel& ker
             sampler_.propose((u - inceptionRate) / scale, n, rng, P.data(), j1, j2);
         }
         if (Ahead) {
-            // The next proposal, from the engine's next words (past this pair's acceptance: a
-            // waiting time, a uniform, the walks' integers) and this event's rates, walks the
-            // tree now: its cache misses overlap this event's acceptance and change.
-            // proposeAhead() keeps only what is exact.
+            // The proposal after the next one walks the tree down to level 1 now, and the
+            // next one finishes its walks (made during the event before) to their blocks:
+            // each half's cache misses overlap an event's work instead of following it
+            // (MajorantSampler::lookTwoAhead). Their words are the engine's next (past this
+            // pair's acceptance: the next event's waiting time, uniform, two integers and
+            // acceptance, then a waiting time and a uniform, the walks' integers), their
+            // rates this event's; proposeAhead() keeps only what is exact.
+            sampler_.finishLookAhead(P.data());
             Rng::Engine peek = rng.engine();
             if (j1 != j2 && j1 < n && j2 < n) peek();  // the acceptance's uniform
-            peek();
+            for (int word = 0; word < 6; ++word) peek();
             const double uNext = Rng::toUniform(peek()) * totalRate;
             if (uNext >= inceptionRate) {
-                sampler_.lookAhead((uNext - inceptionRate) / scale, n, peek, P.data());
+                sampler_.lookTwoAhead((uNext - inceptionRate) / scale, n, peek, P.data());
             }
         }
         const bool real =

@@ -94,6 +94,7 @@ public:
             return;
         }
         ahead_.valid = false;
+        partial_.valid = false;
         if (nTreeColumns_ == 0) {
             tree_.reset(0, capacity);
             return;
@@ -209,6 +210,54 @@ public:
         }
         lookAheadColumn(first, n, peek, particles, ahead_.first);
         lookAheadColumn(second, n, peek, particles, ahead_.second);
+    }
+
+    //- The draws made ahead in two halves (QuantizedSumTree::Partial): lookTwoAhead() makes
+    //  the walks of the proposal after the next one down to level 1 (for an rng whose words
+    //  after the next proposal's are those of `peek`, with the rates as they are now), and
+    //  finishLookAhead(), an event later, finishes them to their blocks as the draws that
+    //  lookAhead() would have made for the next proposal (or none, when the term's totals
+    //  are empty or the tree has changed by more than one assign() since). Each half's cache
+    //  misses are taken an event before its loads. For a tree of at least 2 levels.
+    bool twoAheadPays() const { return lookaheadPays() && tree_.levels() >= 2; }
+    void lookTwoAhead(double u, std::size_t n, Rng::Engine& peek, const Particle* particles)
+    {
+        const std::size_t term = chooseTerm(u);
+        const Column& first = columns_[termFirst_[term]];
+        const Column& second = columns_[termSecond_[term]];
+        partial_.valid = (first.uniform || tree_.totalInteger(first.tree) > 0)
+                         && (second.uniform || tree_.totalInteger(second.tree) > 0);
+        if (!partial_.valid) return;
+        partial_.term = term;
+        if (!first.uniform && !second.uniform) {
+            const std::uint64_t u1 = Rng::predictedIndex(peek(), tree_.totalInteger(first.tree));
+            const std::uint64_t u2 = Rng::predictedIndex(peek(), tree_.totalInteger(second.tree));
+            tree_.walkPairToNode(first.tree, u1, second.tree, u2, partial_.first,
+                                 partial_.second);
+            return;
+        }
+        lookTwoAheadColumn(first, n, peek, particles, partial_.first);
+        lookTwoAheadColumn(second, n, peek, particles, partial_.second);
+    }
+    void finishLookAhead(const Particle* particles)
+    {
+        ahead_.valid = false;
+        if (!partial_.valid) return;
+        partial_.valid = false;
+        const std::size_t term = partial_.term;
+        const Column& first = columns_[termFirst_[term]];
+        const Column& second = columns_[termSecond_[term]];
+        bool ok = true;
+        if (!first.uniform) {
+            ok = tree_.finishToBlock(first.tree, partial_.first, particles, sizeof(Particle),
+                                     ahead_.first);
+        }
+        if (!second.uniform) {
+            ok = ok && tree_.finishToBlock(second.tree, partial_.second, particles,
+                                           sizeof(Particle), ahead_.second);
+        }
+        ahead_.term = term;
+        ahead_.valid = ok;
     }
 
     void proposeAhead(double u, std::size_t n, Rng& rng, const Particle* particles,
@@ -361,6 +410,23 @@ private:
         }
     }
 
+    //- lookTwoAhead() for one column: a tree column's walk to level 1 kept in p; for a
+    //  uniform one the predicted particle's record and tree path prefetched
+    void lookTwoAheadColumn(const Column& col, std::size_t n, Rng::Engine& peek,
+                            const Particle* particles, QuantizedSumTree::Partial& p) const
+    {
+        if (col.uniform) {
+            const std::size_t j = Rng::predictedIndex(peek(), n);
+#if defined(__GNUC__)
+            __builtin_prefetch(&particles[j]);
+#endif
+            tree_.prefetchPath(j);
+        } else {
+            tree_.walkToNode(col.tree, Rng::predictedIndex(peek(), tree_.totalInteger(col.tree)),
+                             p);
+        }
+    }
+
     //- The tree columns of particle p into leaf_, or into `columns`
     void basisColumns(const Particle& p) { basisColumns(p, leaf_); }
     void basisColumns(const Particle& p, double* columns)
@@ -435,6 +501,13 @@ private:
         QuantizedSumTree::Draw first, second;
     };
     Ahead ahead_;
+    //- lookTwoAhead()'s walks to level 1, for finishLookAhead()
+    struct Partials {
+        bool valid = false;
+        std::size_t term = 0;
+        QuantizedSumTree::Partial first, second;
+    };
+    Partials partial_;
     double leaf_[QuantizedSumTree::maxColumns] = {};          // one particle's tree columns
     double columnTotals_[QuantizedSumTree::maxColumns] = {};  // column totals as of rateSum()
     QuantizedSumTree tree_;

@@ -209,7 +209,7 @@ public:
     {
         std::uint64_t r1 = u1, r2 = u2;
         std::size_t n1 = 0, n2 = 0;
-        walks<true, true, true>(c1, r1, n1, c2, r2, n2, leafData, leafBytes);
+        walks<true, true, 1>(c1, r1, n1, c2, r2, n2, leafData, leafBytes);
         // the walks subtracted the prefix below their blocks of leaves
         d1 = Draw{n1 * fanOut, u1 - r1, version_};
         d2 = Draw{n2 * fanOut, u2 - r2, version_};
@@ -220,8 +220,67 @@ public:
     {
         std::uint64_t r = u;
         std::size_t node = 0;
-        walks<true, false, true>(c, r, node, c, r, node, leafData, leafBytes);
+        walks<true, false, 1>(c, r, node, c, r, node, leafData, leafBytes);
         d = Draw{node * fanOut, u - r, version_};
+    }
+
+    //- Draws made two changes ahead, in two halves (MajorantSampler::lookTwoAhead): the walk
+    //  for u down to a node of level 1 (64 leaves), whose line it prefetches, kept as a
+    //  Partial: the node, where its first leaf's interval began, u and the tree's version;
+    //  then, one change later, finishToBlock() takes the walk's step on level 1 as the tree
+    //  is then (the line now in the cache) and gives the Draw of its block, as walk() would
+    //  for u, its lines and the candidates' records prefetched. So neither half waits on a
+    //  cache miss: the walk made ahead in one piece waited on level 1 in a tree whose level 1
+    //  is bigger than the L2 cache (measured, issue 19, ninth session). For a tree of at
+    //  least 2 levels (levels()), so that level 1 exists.
+    struct Partial {
+        std::size_t node = 0;
+        std::uint64_t start = 0;
+        std::uint64_t u = 0;
+        std::uint64_t version = 0;
+    };
+    void walkPairToNode(std::size_t c1, std::uint64_t u1, std::size_t c2, std::uint64_t u2,
+                        Partial& p1, Partial& p2) const
+    {
+        std::uint64_t r1 = u1, r2 = u2;
+        std::size_t n1 = 0, n2 = 0;
+        walks<true, true, 2>(c1, r1, n1, c2, r2, n2, nullptr, 0);
+        p1 = Partial{n1, u1 - r1, u1, version_};
+        p2 = Partial{n2, u2 - r2, u2, version_};
+    }
+    void walkToNode(std::size_t c, std::uint64_t u, Partial& p) const
+    {
+        std::uint64_t r = u;
+        std::size_t node = 0;
+        walks<true, false, 2>(c, r, node, c, r, node, nullptr, 0);
+        p = Partial{node, u - r, u, version_};
+    }
+    //- The Draw of p's walk finished to its block, when the tree is as it was at p or changed
+    //  since by one assign() (p's start moved by the change's delta when the changed leaf
+    //  lies before p's node); false otherwise. A u outside the node (the change moved it)
+    //  gives the Draw of the node's last block, still exact for drawNear(), or false where
+    //  the last node of the level has no such block.
+    bool finishToBlock(std::size_t c, const Partial& p, const void* leafData,
+                       std::size_t leafBytes, Draw& d) const
+    {
+        std::uint64_t start = p.start;
+        if (p.version != version_) {
+            if (p.version + 1 != version_) return false;
+            start += lastDelta_[c]
+                     & (std::uint64_t(0) - std::uint64_t(lastLeaf_ < p.node * fanOut * fanOut));
+        }
+        std::uint64_t r = p.u - start;
+        std::size_t node = p.node;
+        switch (ncol_) {
+        case 1: finishStep<1>(c, r, node, leafData, leafBytes); break;
+        case 2: finishStep<2>(c, r, node, leafData, leafBytes); break;
+        case 3: finishStep<3>(c, r, node, leafData, leafBytes); break;
+        case 4: finishStep<4>(c, r, node, leafData, leafBytes); break;
+        default: finishStep<0>(c, r, node, leafData, leafBytes);
+        }
+        if (node * fanOut >= capacity_) return false;  // past the last block
+        d = Draw{node * fanOut, p.u - r, version_};
+        return true;
     }
 
     //- sample(c, u) from a Draw d made earlier by walk() or walkPair(), without a walk: true
@@ -388,7 +447,7 @@ private:
     //  as in assign()) and with the levels' prefetches in separate loops: measured, a step
     //  with the runtime block size and every level's prefetch tests took about 60
     //  instructions and spilled the two walks' registers.
-    template<bool Fetch, bool Two, bool ToBlock = false>
+    template<bool Fetch, bool Two, int Stop = 0>
 #if defined(__GNUC__)
     __attribute__((always_inline))
 #endif
@@ -397,18 +456,18 @@ private:
                std::size_t leafBytes) const
     {
         switch (ncol_) {
-        case 1: walksFor<1, Fetch, Two, ToBlock>(c1, u1, n1, c2, u2, n2, leafData, leafBytes); break;
-        case 2: walksFor<2, Fetch, Two, ToBlock>(c1, u1, n1, c2, u2, n2, leafData, leafBytes); break;
-        case 3: walksFor<3, Fetch, Two, ToBlock>(c1, u1, n1, c2, u2, n2, leafData, leafBytes); break;
-        case 4: walksFor<4, Fetch, Two, ToBlock>(c1, u1, n1, c2, u2, n2, leafData, leafBytes); break;
-        default: walksFor<0, Fetch, Two, ToBlock>(c1, u1, n1, c2, u2, n2, leafData, leafBytes);
+        case 1: walksFor<1, Fetch, Two, Stop>(c1, u1, n1, c2, u2, n2, leafData, leafBytes); break;
+        case 2: walksFor<2, Fetch, Two, Stop>(c1, u1, n1, c2, u2, n2, leafData, leafBytes); break;
+        case 3: walksFor<3, Fetch, Two, Stop>(c1, u1, n1, c2, u2, n2, leafData, leafBytes); break;
+        case 4: walksFor<4, Fetch, Two, Stop>(c1, u1, n1, c2, u2, n2, leafData, leafBytes); break;
+        default: walksFor<0, Fetch, Two, Stop>(c1, u1, n1, c2, u2, n2, leafData, leafBytes);
         }
     }
 
     //- walks() for NC columns (ncol_ when NC is 0). With Fetch: the children of the node on
     //  levels 3 to 1 prefetched, and at the leaves the candidates' records and the leaf block's
     //  other columns
-    template<std::size_t NC, bool Fetch, bool Two, bool ToBlock>
+    template<std::size_t NC, bool Fetch, bool Two, int Stop>
     void walksFor(std::size_t c1, std::uint64_t& u1, std::size_t& n1, std::size_t c2,
                   std::uint64_t& u2, std::size_t& n2, const void* leafData,
                   std::size_t leafBytes) const
@@ -418,20 +477,37 @@ private:
         std::uint64_t r1 = u1, r2 = Two ? u2 : 0;
         std::size_t k1 = n1, k2 = Two ? n2 : 0;
         std::size_t l = nLevels_;
-        if (Fetch) {
+        if (Fetch && Stop > 0) {
+            // the walks of draws made ahead, to a block (Stop 1) or a level-1 node (Stop 2):
+            // no children prefetched, the node where they stop prefetched instead
+            for (; l > std::size_t(Stop); --l) {
+                step<NC, false>(l - 1, c1, r1, k1);
+                if (Two) step<NC, false>(l - 1, c2, r2, k2);
+            }
+            if (Stop == 1) {
+                fetchLeafData<NC, true>(c1, k1, leafData, leafBytes);
+                if (Two) fetchLeafData<NC, true>(c2, k2, leafData, leafBytes);
+            } else {
+#if defined(__GNUC__)
+                const std::size_t bs = NC > 0 ? NC * fanOut : blockSize_;
+                __builtin_prefetch(levelBase_[Stop - 1] + k1 * bs + c1 * fanOut);
+                if (Two) __builtin_prefetch(levelBase_[Stop - 1] + k2 * bs + c2 * fanOut);
+#endif
+            }
+        } else if (Fetch) {
             for (; l > childFetchLevels + 1; --l) {
                 step<NC, false>(l - 1, c1, r1, k1);
                 if (Two) step<NC, false>(l - 1, c2, r2, k2);
             }
             for (; l > 1; --l) {
-                step<NC, !ToBlock>(l - 1, c1, r1, k1);
-                if (Two) step<NC, !ToBlock>(l - 1, c2, r2, k2);
+                step<NC, true>(l - 1, c1, r1, k1);
+                if (Two) step<NC, true>(l - 1, c2, r2, k2);
             }
-            fetchLeafData<NC, ToBlock>(c1, k1, leafData, leafBytes);
-            if (!ToBlock) step<NC, false>(0, c1, r1, k1);
+            fetchLeafData<NC, false>(c1, k1, leafData, leafBytes);
+            step<NC, false>(0, c1, r1, k1);
             if (Two) {
-                fetchLeafData<NC, ToBlock>(c2, k2, leafData, leafBytes);
-                if (!ToBlock) step<NC, false>(0, c2, r2, k2);
+                fetchLeafData<NC, false>(c2, k2, leafData, leafBytes);
+                step<NC, false>(0, c2, r2, k2);
             }
         } else {
             for (; l > 0; --l) {
@@ -449,6 +525,18 @@ private:
 
     //- The levels above the leaves whose steps prefetch the 8 children of their node
     static constexpr std::size_t childFetchLevels = 3;
+
+    //- finishToBlock()'s step on level 1 and the prefetches of the block's lines and records
+    template<std::size_t NC>
+#if defined(__GNUC__)
+    __attribute__((always_inline))
+#endif
+    void finishStep(std::size_t c, std::uint64_t& r, std::size_t& node, const void* leafData,
+                    std::size_t leafBytes) const
+    {
+        step<NC, false>(1, c, r, node);
+        fetchLeafData<NC, true>(c, node, leafData, leafBytes);
+    }
 
     //- Before the last step from leaf-level node `node`: its 8 candidates' records (leafData:
     //  one leafBytes-sized record per leaf) and the leaf block's other columns, which the
