@@ -165,12 +165,13 @@ TEST(MajorantSampler, PairRateFromTheLeavesIsThePairRateFromTheParticles)
     }
 }
 
-//- proposeAhead() after lookAhead() proposes exactly the pairs propose() does, along a
-//  population that changes between the two calls as SWA's does (one set()) and otherwise
+//- proposeAhead() after the draws made ahead (lookTwoAhead() for the proposal after next,
+//  finishLookAhead() for the next) proposes exactly the pairs propose() does, along a
+//  population that changes between the calls as SWA's does (one set()) and otherwise
 //  (coarsenings, appends, removals by swap): two samplers on the same particles and random
-//  streams, one looking ahead with the stream's next words (or, every third proposal,
-//  with other words), for 4 kernels (SWA's weighted second factors). A bigger tree than the rest of this file (400 particles, 3 levels),
-//  so that the draws made ahead have walks to save.
+//  streams, one looking ahead with the stream's words (or, every third proposal, with other
+//  words), for 4 kernels (SWA's weighted second factors). A bigger tree than the rest of this
+//  file (400 particles, 3 levels), so that the draws made ahead have walks to save.
 TEST(MajorantSampler, ProposalsDrawnAheadAreTheProposals)
 {
     for (const char* name : {"additive", "multiplicative", "saffmanTurner", "constant"}) {
@@ -198,14 +199,17 @@ TEST(MajorantSampler, ProposalsDrawnAheadAreTheProposals)
             ASSERT_EQ(a1, b1) << name << " proposal " << s;
             ASSERT_EQ(a2, b2) << name << " proposal " << s;
             ++compared;
-            // the next proposal drawn ahead, before this one's change; every third from other
-            // words (a wrong guess, often of another term: declined or exact all the same)
+            // the next proposal's walks finished and the one after's made, before this one's
+            // change; every third from other words (a wrong guess, often of another term:
+            // declined or exact all the same)
+            ahead.finishLookAhead(P.data());
             if (s % 3 == 2) {
                 Rng::Engine peek = changes.engine();
-                ahead.lookAhead(changes.uniform() * sum, n, peek, P.data());
+                ahead.lookTwoAhead(changes.uniform() * sum, n, peek, P.data());
             } else {
                 Rng::Engine peek = rngAhead.engine();
-                ahead.lookAhead(Rng::toUniform(peek()) * sum, n, peek, P.data());
+                for (int word = 0; word < 3; ++word) peek();  // the next: a uniform, two integers
+                ahead.lookTwoAhead(Rng::toUniform(peek()) * sum, n, peek, P.data());
             }
             const double r = changes.uniform();
             if (r < 0.7) {

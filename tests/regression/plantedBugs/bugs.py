@@ -28,7 +28,7 @@ of workDecomposition's runsPerPart (issue 19, core and case tests); B119 in the 
 tree's refusal of values that are not finite and >= 0; B120-B121 in the arrivals of a decomposed
 run's particle exchange (issue 19, case_parallel); B122-B123 in the tree's ceiling without
 std::ceil and B124 in the report's order of the cells, B125-B126 in the cost fit of cellWork (issue 19,
-fifth session); B127 in the pair rate read from the tree's leaves and B128-B129 in the tree's build block by block (issue 19, sixth session); B130-B136 in the draws made ahead of the event loop B137-B138 in cellWork's ratios and B139-B141 in the ziggurat exponential (issue 19, seventh session); B142-B143 in the big arrays on huge pages and B144-B146 in the tree built in fewer passes, B147-B148 in the sampler's fixed arrays, B149 in the ceiling by rounding (issue 19, eighth session); B150 in the acceptance without a branch, B151-B153 in the draws made ahead to the block (issue 19, ninth session). B14-B17 now
+fifth session); B127 in the pair rate read from the tree's leaves and B128-B129 in the tree's build block by block (issue 19, sixth session); B130-B136 in the draws made ahead of the event loop B137-B138 in cellWork's ratios and B139-B141 in the ziggurat exponential (issue 19, seventh session); B142-B143 in the big arrays on huge pages and B144-B146 in the tree built in fewer passes, B147-B148 in the sampler's fixed arrays, B149 in the ceiling by rounding (issue 19, eighth session); B150 in the acceptance without a branch, B151-B153 in the draws made ahead to the block, B154-B155 in the draws made in two halves (issue 19, ninth session). B14-B17 now
 sit in the coagulationPost package (the campaign measured them in the scripts it came from).
 
     bugs.py list                 id, file, targeted tests, what the bug is
@@ -639,10 +639,20 @@ BUGS = {
              SAMPLERTESTS + "|core.SwaLookahead",
              "draws made ahead to the block: the first integer past the block taken by its last leaf"),
     "B153": (TREE,
-             "        d1 = Draw{n1 * fanOut, u1 - r1, version_};\n",
-             "        d1 = Draw{n1 * fanOut + 1, u1 - r1, version_};\n",
+             "        d = Draw{node * fanOut, p.u - r, version_};\n",
+             "        d = Draw{node * fanOut + 1, p.u - r, version_};\n",
              SAMPLERTESTS + "|core.SwaLookahead",
-             "draws made ahead to the block: the pair's first Draw names the block's second leaf with the first's start"),
+             "draws made ahead to the block: the Draw names the block's second leaf with the first's start"),
+    "B154": (TREE,
+             "        if (node * fanOut >= capacity_) return false;  // past the last block\n",
+             "",
+             SAMPLERTESTS + "|core.SwaLookahead",
+             "draws made in two halves: a walk finished past the last block of the level's last node names a block that does not exist"),
+    "B155": (TREE,
+             "                     & (std::uint64_t(0) - std::uint64_t(lastLeaf_ < p.node * fanOut * fanOut));\n",
+             "                     & (std::uint64_t(0) - std::uint64_t(lastLeaf_ < p.node * fanOut));\n",
+             SAMPLERTESTS + "|core.SwaLookahead",
+             "draws made in two halves: the change's shift tested against the node's index in blocks, not its first leaf"),
     "B130": (TREE,
              "            start += lastDelta_[c] & (std::uint64_t(0) - std::uint64_t(lastLeaf_ < d.leaf));\n",
              "",
