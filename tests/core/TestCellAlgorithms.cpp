@@ -499,14 +499,16 @@ TEST(SwaNumberControl, BooksTheMassItChanges)
 
 //- SWA's event loop draws each proposal ahead in a sum tree too big for the caches
 //  (CellAlgorithm::setLookahead, on by default): the same particles, bit for bit, and the
-//  same event counts as without, for a population of 2^19 particles (a 14 MB tree) with
-//  the additive kernel (a pair walk or a uniform choice and a walk per proposal) and the
-//  multiplicative one (a pair walk; 9 MB), with inception (appends between the draws) and
-//  without, over 3 steps.
+//  same event counts as without, for a population of 2^19 - 37 particles (a 14 MB tree:
+//  the draws made in two halves; its last node of level 1 has fewer than 8 blocks) and of
+//  100 003 (2.7 MB: in one piece) with the additive kernel (a pair walk or a uniform choice
+//  and a walk per proposal) and the multiplicative one (a pair walk; 9 MB and 1.8 MB), with
+//  inception (appends between the draws) and without, over 3 steps.
 TEST(SwaLookahead, DrawsMadeAheadChangeNoResult)
 {
+    for (const std::size_t N : {(std::size_t(1) << 19) - 37, std::size_t(100003)}) {
     for (const char* name : {"additive", "multiplicative"}) {
-        for (const double rate : {0.0, 0.2}) {  // per unit volume: 2e4 inceptions a step
+        for (const double rate : {0.0, 0.2}) {  // per unit volume: N / 26 inceptions a step
             auto kernel = makeKernel(name, 1.0);
             InceptionModel inception;
             inception.rate = rate;
@@ -516,22 +518,24 @@ TEST(SwaLookahead, DrawsMadeAheadChangeNoResult)
             for (const bool ahead : {true, false}) {
                 auto alg = makeCellAlgorithm("SWA", *kernel, inception);
                 alg->setLookahead(ahead);
-                const std::size_t N = std::size_t(1) << 19;
                 CellPopulation pop = monodisperse(N, static_cast<double>(N));
                 Rng rng(99);
                 for (int step = 0; step < 3; ++step) {
                     alg->advance(pop, 0.02, rng, stats[ahead ? 0 : 1]);
                 }
-                EXPECT_GE(alg->workspaceBytes(), std::size_t(8) << 20) << "a big tree";
+                // big enough for draws made ahead (1.25 MiB), in two halves from 6 MiB
+                EXPECT_GE(alg->workspaceBytes(), std::size_t(1) << 20) << N;
+                EXPECT_EQ(alg->workspaceBytes() >= (std::size_t(6) << 20), N > 200000) << N;
                 pops.push_back(std::move(pop));
             }
-            const std::string what = std::string(name) + (rate > 0 ? " with inception" : "");
-            EXPECT_GT(stats[0].coagulations, 30000u) << what;
+            const std::string what =
+                std::to_string(N) + " " + name + (rate > 0 ? " with inception" : "");
+            EXPECT_GT(stats[0].coagulations, N / 20) << what;
             EXPECT_EQ(stats[0].coagulations, stats[1].coagulations) << what;
             EXPECT_EQ(stats[0].fictitious, stats[1].fictitious) << what;
             EXPECT_EQ(stats[0].inceptions, stats[1].inceptions) << what;
             if (rate > 0) {
-                EXPECT_GT(stats[0].inceptions, 1000u) << what;
+                EXPECT_GT(stats[0].inceptions, N / 500) << what;
             }
             ASSERT_EQ(pops[0].particles.size(), pops[1].particles.size()) << what;
             std::size_t differ = 0;
@@ -542,5 +546,6 @@ TEST(SwaLookahead, DrawsMadeAheadChangeNoResult)
             }
             EXPECT_EQ(differ, 0u) << what;
         }
+    }
     }
 }

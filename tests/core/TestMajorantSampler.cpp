@@ -165,13 +165,14 @@ TEST(MajorantSampler, PairRateFromTheLeavesIsThePairRateFromTheParticles)
     }
 }
 
-//- proposeAhead() after the draws made ahead (lookTwoAhead() for the proposal after next,
-//  finishLookAhead() for the next) proposes exactly the pairs propose() does, along a
-//  population that changes between the calls as SWA's does (one set()) and otherwise
+//- proposeAhead() after lookAhead() proposes exactly the pairs propose() does, along a
+//  population that changes between the two calls as SWA's does (one set()) and otherwise
 //  (coarsenings, appends, removals by swap): two samplers on the same particles and random
-//  streams, one looking ahead with the stream's words (or, every third proposal, with other
-//  words), for 4 kernels (SWA's weighted second factors). A bigger tree than the rest of this
-//  file (400 particles, 3 levels), so that the draws made ahead have walks to save.
+//  streams, one looking ahead with the stream's next words (or, every third proposal,
+//  with other words), for 4 kernels (SWA's weighted second factors); and a third making
+//  its draws ahead in two halves (lookTwoAhead() for the proposal after next,
+//  finishLookAhead() for the next), the same way. A bigger tree than the rest of this file (400 particles, 3 levels),
+//  so that the draws made ahead have walks to save.
 TEST(MajorantSampler, ProposalsDrawnAheadAreTheProposals)
 {
     for (const char* name : {"additive", "multiplicative", "saffmanTurner", "constant"}) {
@@ -180,12 +181,14 @@ TEST(MajorantSampler, ProposalsDrawnAheadAreTheProposals)
         for (int j = 0; j < 400; ++j) {
             P.push_back(Particle{ParticleType{1.0 + 0.37 * (j % 50)}, 0.5 + 0.11 * (j % 7), j});
         }
-        MajorantSampler plain(true), ahead(true);
+        MajorantSampler plain(true), ahead(true), halves(true);
         plain.configure(*kernel, "test");
         ahead.configure(*kernel, "test");
+        halves.configure(*kernel, "test");
         plain.build(P, P.size());
         ahead.build(P, P.size());
-        Rng rngPlain(11), rngAhead(11), changes(5);
+        halves.build(P, P.size());
+        Rng rngPlain(11), rngAhead(11), rngHalves(11), changes(5);
         std::size_t compared = 0;
         for (int s = 0; s < 6000; ++s) {
             const std::size_t n = P.size();
@@ -193,23 +196,34 @@ TEST(MajorantSampler, ProposalsDrawnAheadAreTheProposals)
             ASSERT_EQ(ahead.rateSum(n), sum);
             const double u = rngPlain.uniform() * sum;
             ASSERT_EQ(rngAhead.uniform() * sum, u);
-            std::size_t a1 = 0, a2 = 0, b1 = 0, b2 = 0;
+            ASSERT_EQ(halves.rateSum(n), sum);
+            ASSERT_EQ(rngHalves.uniform() * sum, u);
+            std::size_t a1 = 0, a2 = 0, b1 = 0, b2 = 0, h1 = 0, h2 = 0;
             plain.propose(u, n, rngPlain, P.data(), a1, a2);
             ahead.proposeAhead(u, n, rngAhead, P.data(), b1, b2);
+            halves.proposeAhead(u, n, rngHalves, P.data(), h1, h2);
             ASSERT_EQ(a1, b1) << name << " proposal " << s;
             ASSERT_EQ(a2, b2) << name << " proposal " << s;
+            ASSERT_EQ(a1, h1) << name << " proposal " << s << " (two halves)";
+            ASSERT_EQ(a2, h2) << name << " proposal " << s << " (two halves)";
             ++compared;
-            // the next proposal's walks finished and the one after's made, before this one's
-            // change; every third from other words (a wrong guess, often of another term:
-            // declined or exact all the same)
-            ahead.finishLookAhead(P.data());
+            // the next proposal drawn ahead, before this one's change; every third from other
+            // words (a wrong guess, often of another term: declined or exact all the same)
             if (s % 3 == 2) {
                 Rng::Engine peek = changes.engine();
-                ahead.lookTwoAhead(changes.uniform() * sum, n, peek, P.data());
+                ahead.lookAhead(changes.uniform() * sum, n, peek, P.data());
             } else {
                 Rng::Engine peek = rngAhead.engine();
+                ahead.lookAhead(Rng::toUniform(peek()) * sum, n, peek, P.data());
+            }
+            halves.finishLookAhead(P.data());
+            if (s % 3 == 1) {
+                Rng::Engine peek = changes.engine();
+                halves.lookTwoAhead(changes.uniform() * sum, n, peek, P.data());
+            } else {
+                Rng::Engine peek = rngHalves.engine();
                 for (int word = 0; word < 3; ++word) peek();  // the next: a uniform, two integers
-                ahead.lookTwoAhead(Rng::toUniform(peek()) * sum, n, peek, P.data());
+                halves.lookTwoAhead(Rng::toUniform(peek()) * sum, n, peek, P.data());
             }
             const double r = changes.uniform();
             if (r < 0.7) {
@@ -219,19 +233,23 @@ TEST(MajorantSampler, ProposalsDrawnAheadAreTheProposals)
                 P[a1].weight *= m1 / (m1 + m2);
                 plain.set(P[a1], a1);
                 ahead.set(P[a1], a1);
+                halves.set(P[a1], a1);
             } else if (r < 0.72) {
                 const std::size_t a = changes.uniformIndex(n);
                 P[a].type.mass *= 1e6;  // past the column's headroom: coarsened
                 plain.set(P[a], a);
                 ahead.set(P[a], a);
+                halves.set(P[a], a);
             } else if (r < 0.86) {
                 P.push_back(Particle{ParticleType{0.5 + changes.uniform()}, changes.uniform(), -1});
                 plain.append(P.back(), P.size() - 1);
                 ahead.append(P.back(), P.size() - 1);
+                halves.append(P.back(), P.size() - 1);
             } else if (n > 200) {
                 const std::size_t k = changes.uniformIndex(n);
                 plain.removeBySwap(k, n - 1);
                 ahead.removeBySwap(k, n - 1);
+                halves.removeBySwap(k, n - 1);
                 P[k] = P[n - 1];
                 P.pop_back();
             }

@@ -10,7 +10,7 @@
 //   static constexpr bool equalWeights;     DSA: all weights equal (pulled out of the sums,
 //                                           halving halves the volume, closed-cell doubling)
 //   static constexpr bool lookahead;        whether the event loop may draw the next proposal
-//                                           ahead (MajorantSampler::lookTwoAhead): for a jump
+//                                           ahead (MajorantSampler::lookAhead): for a jump
 //                                           that changes the sampler by one set() (SWA); a
 //                                           removal by swap (DSA) leaves such draws unusable
 //   void coagulate(pop, j1, j2, rng, sampler)   the accepted jump on the pair (j1, j2),
@@ -239,7 +239,7 @@ void JumpProcess<Jump>::advance(CellPopulation& pop, const CoagulationKernel& ke
     P.reserve(capacity);
     sampler_.build(P, capacity);
 
-    if (Jump::lookahead && lookahead_ && sampler_.lookaheadPays()) {
+    if (Jump::lookahead && lookahead_ && sampler_.twoAheadPays()) {
         events<true>(pop, kernel, inceptionRate, w, dt, rng, stats);
     } else {
         events<false>(pop, kernel, inceptionRate, w, dt, rng, stats);

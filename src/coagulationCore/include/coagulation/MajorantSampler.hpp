@@ -179,31 +179,52 @@ public:
         proposeWith<false>(u, n, rng, particles, j1, j2);
     }
 
-    //- Draws made ahead (issue 19: software pipelining of the event loop), in two halves
-    //  (QuantizedSumTree::Partial): lookTwoAhead() makes the walks of the proposal after the
-    //  next one down to level 1, for an rng whose words after the next proposal's are those of
-    //  `peek`, with the rates as they are now; finishLookAhead(), an event later, finishes
-    //  them to their blocks (or drops them: the term's totals empty, the tree changed by more
-    //  than one assign() since). The next proposeAhead(), the same as propose() otherwise,
-    //  takes the leaves of those blocks through QuantizedSumTree::drawNear() for its own
-    //  random integers, exact, and walks where that declines (another term, a change other
-    //  than one set(), a leaf farther than a few intervals). So the results are propose()'s
-    //  bit for bit, and each half's cache misses are taken an event before its loads, while
-    //  other work goes on (measured, issue 19, ninth session: the walk made ahead in one
-    //  piece, an event before, waited on level 1 and on the leaves in a tree bigger than the
-    //  caches). Worth it only in a tree too big for the caches: lookaheadPays().
-    bool lookaheadPays() const
-    {
-        return !binned_ && nTreeColumns_ > 0 && tree_.lookaheadPays() && tree_.levels() >= 2;
-    }
+    //- Draws made ahead (issue 19: software pipelining of the event loop). lookAhead() makes
+    //  the proposal that propose(u, n, rng, particles) would make now for an rng whose next
+    //  words are those of `peek`: the same term and walks, kept. The next proposeAhead(), the
+    //  same as propose() otherwise, takes their leaves through QuantizedSumTree::drawNear()
+    //  for its own random integers, exact, and walks where that declines (another term, a
+    //  change other than one set(), a leaf farther than a few intervals). So the results
+    //  are propose()'s bit for bit, and a caller that calls lookAhead() before its change of
+    //  the particles has the walks' cache misses overlap that work instead of following it.
+    //  Worth it only in a tree too big for the caches: lookaheadPays().
+    bool lookaheadPays() const { return !binned_ && nTreeColumns_ > 0 && tree_.lookaheadPays(); }
 
-    void lookTwoAhead(double u, std::size_t n, Rng::Engine& peek, const Particle* particles)
+    void lookAhead(double u, std::size_t n, Rng::Engine& peek, const Particle* particles)
     {
         const std::size_t term = chooseTerm(u);
         const Column& first = columns_[termFirst_[term]];
         const Column& second = columns_[termSecond_[term]];
         // a term of positive rate (chooseTerm) has positive totals; the guard keeps a walk
         // off an empty column (u = 0 would step past the tree's last nodes) whatever the rates
+        ahead_.valid = (first.uniform || tree_.totalInteger(first.tree) > 0)
+                       && (second.uniform || tree_.totalInteger(second.tree) > 0);
+        if (!ahead_.valid) return;
+        ahead_.term = term;
+        if (!first.uniform && !second.uniform) {
+            const std::uint64_t u1 = Rng::predictedIndex(peek(), tree_.totalInteger(first.tree));
+            const std::uint64_t u2 = Rng::predictedIndex(peek(), tree_.totalInteger(second.tree));
+            tree_.walkPair(first.tree, u1, second.tree, u2, particles, sizeof(Particle),
+                           ahead_.first, ahead_.second);
+            return;
+        }
+        lookAheadColumn(first, n, peek, particles, ahead_.first);
+        lookAheadColumn(second, n, peek, particles, ahead_.second);
+    }
+
+    //- The draws made ahead in two halves (QuantizedSumTree::Partial): lookTwoAhead() makes
+    //  the walks of the proposal after the next one down to level 1 (for an rng whose words
+    //  after the next proposal's are those of `peek`, with the rates as they are now), and
+    //  finishLookAhead(), an event later, finishes them to their blocks as the draws that
+    //  lookAhead() would have made for the next proposal (or none, when the term's totals
+    //  are empty or the tree has changed by more than one assign() since). Each half's cache
+    //  misses are taken an event before its loads. For a tree of at least 2 levels.
+    bool twoAheadPays() const { return lookaheadPays() && tree_.levels() >= 2; }
+    void lookTwoAhead(double u, std::size_t n, Rng::Engine& peek, const Particle* particles)
+    {
+        const std::size_t term = chooseTerm(u);
+        const Column& first = columns_[termFirst_[term]];
+        const Column& second = columns_[termSecond_[term]];
         partial_.valid = (first.uniform || tree_.totalInteger(first.tree) > 0)
                          && (second.uniform || tree_.totalInteger(second.tree) > 0);
         if (!partial_.valid) return;
@@ -303,7 +324,7 @@ private:
 
     std::size_t columnFor(int b, bool weighted, const std::string& who);
 
-    //- propose(), and with Ahead proposeAhead(): the draws made ahead taken where
+    //- propose(), and with Ahead proposeAhead(): the draws made by lookAhead() taken where
     //  they are exact
     template<bool Ahead>
 #if defined(__GNUC__)
@@ -372,6 +393,23 @@ private:
         return lastTerm_;
     }
 
+    //- lookAhead() for one column: a tree column's walk kept in d; for a uniform one the
+    //  predicted particle's record and tree path prefetched
+    void lookAheadColumn(const Column& col, std::size_t n, Rng::Engine& peek,
+                         const Particle* particles, QuantizedSumTree::Draw& d) const
+    {
+        if (col.uniform) {
+            const std::size_t j = Rng::predictedIndex(peek(), n);
+#if defined(__GNUC__)
+            __builtin_prefetch(&particles[j]);
+#endif
+            tree_.prefetchPath(j);
+        } else {
+            tree_.walk(col.tree, Rng::predictedIndex(peek(), tree_.totalInteger(col.tree)),
+                       particles, sizeof(Particle), d);
+        }
+    }
+
     //- lookTwoAhead() for one column: a tree column's walk to level 1 kept in p; for a
     //  uniform one the predicted particle's record and tree path prefetched
     void lookTwoAheadColumn(const Column& col, std::size_t n, Rng::Engine& peek,
@@ -423,7 +461,7 @@ private:
         return columnTotals_[col.tree];
     }
 
-    //- A draw from one column; `ahead` (or null): the tree column's draw made ahead
+    //- A draw from one column; `ahead` (or null): the tree column's draw made by lookAhead()
     std::size_t sampleColumn(const Column& col, std::size_t n, Rng& rng,
                              const Particle* particles,
                              const QuantizedSumTree::Draw* ahead) const
@@ -456,8 +494,7 @@ private:
     double phi_[maxBasis] = {};
     double phi2_[maxBasis] = {};
     std::size_t lastTerm_ = 0;       // rateSum(): the last term with a positive rate
-    //- finishLookAhead()'s draws for the next proposeAhead(): its term and the tree columns'
-    //  blocks
+    //- lookAhead()'s draws for the next proposeAhead(): its term and the tree columns' walks
     struct Ahead {
         bool valid = false;
         std::size_t term = 0;

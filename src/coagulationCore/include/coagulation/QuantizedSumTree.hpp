@@ -183,12 +183,11 @@ public:
         j2 = n2;
     }
 
-    //- Draws made ahead of time (issue 19's lookahead, MajorantSampler::lookTwoAhead). A walk
+    //- Draws made ahead of time (issue 19's lookahead, MajorantSampler::lookAhead). A walk
     //  for a random integer predicted before the change that precedes the real draw is kept
-    //  as a Draw: the first leaf of its block of 8, where that leaf's interval [start,
-    //  start + q) of the column's integers began, and the tree's version then. drawNear()
-    //  turns it into the real draw with the walk's last step; the walk's cache misses were
-    //  taken earlier, overlapping other work.
+    //  as a Draw: its leaf, where that leaf's interval [start, start + q) of the column's
+    //  integers began, and the tree's version then. drawNear() turns it into the real draw
+    //  without a walk; the walk's cache misses were taken earlier, overlapping other work.
     struct Draw {
         std::size_t leaf = 0;
         std::uint64_t start = 0;
@@ -204,15 +203,36 @@ public:
     //  cost more than they hide; before that change the threshold was 2 MiB)
     bool lookaheadPays() const { return memoryBytes() >= lookaheadBytes; }
 
+    //- The walks of samplePair() (its prefetches included) for u1 and u2, kept as Draws
+    void walkPair(std::size_t c1, std::uint64_t u1, std::size_t c2, std::uint64_t u2,
+                  const void* leafData, std::size_t leafBytes, Draw& d1, Draw& d2) const
+    {
+        std::uint64_t r1 = u1, r2 = u2;
+        std::size_t n1 = 0, n2 = 0;
+        walks<true, true, 1>(c1, r1, n1, c2, r2, n2, leafData, leafBytes);
+        // the walks subtracted the prefix below their blocks of leaves
+        d1 = Draw{n1 * fanOut, u1 - r1, version_};
+        d2 = Draw{n2 * fanOut, u2 - r2, version_};
+    }
+    //- The walk of sample() (its prefetches included) for u, kept as a Draw
+    void walk(std::size_t c, std::uint64_t u, const void* leafData, std::size_t leafBytes,
+              Draw& d) const
+    {
+        std::uint64_t r = u;
+        std::size_t node = 0;
+        walks<true, false, 1>(c, r, node, c, r, node, leafData, leafBytes);
+        d = Draw{node * fanOut, u - r, version_};
+    }
+
     //- Draws made two changes ahead, in two halves (MajorantSampler::lookTwoAhead): the walk
     //  for u down to a node of level 1 (64 leaves), whose line it prefetches, kept as a
     //  Partial: the node, where its first leaf's interval began, u and the tree's version;
     //  then, one change later, finishToBlock() takes the walk's step on level 1 as the tree
-    //  is then (the line now in the cache) and gives the Draw of its block for u, the block's
-    //  lines and its candidates' records prefetched. So neither half waits on a cache miss:
-    //  a walk made ahead in one piece, to the leaf or to the block, waited on its lowest
-    //  levels in a tree bigger than the caches (measured, issue 19, ninth session). For a
-    //  tree of at least 2 levels (levels()), so that level 1 exists.
+    //  is then (the line now in the cache) and gives the Draw of its block, as walk() would
+    //  for u, its lines and the candidates' records prefetched. So neither half waits on a
+    //  cache miss: the walk made ahead in one piece waited on level 1 in a tree whose level 1
+    //  is bigger than the L2 cache (measured, issue 19, ninth session). For a tree of at
+    //  least 2 levels (levels()), so that level 1 exists.
     struct Partial {
         std::size_t node = 0;
         std::uint64_t start = 0;
@@ -224,7 +244,7 @@ public:
     {
         std::uint64_t r1 = u1, r2 = u2;
         std::size_t n1 = 0, n2 = 0;
-        walks<true, true, true>(c1, r1, n1, c2, r2, n2, nullptr, 0);
+        walks<true, true, 2>(c1, r1, n1, c2, r2, n2, nullptr, 0);
         p1 = Partial{n1, u1 - r1, u1, version_};
         p2 = Partial{n2, u2 - r2, u2, version_};
     }
@@ -232,7 +252,7 @@ public:
     {
         std::uint64_t r = u;
         std::size_t node = 0;
-        walks<true, false, true>(c, r, node, c, r, node, nullptr, 0);
+        walks<true, false, 2>(c, r, node, c, r, node, nullptr, 0);
         p = Partial{node, u - r, u, version_};
     }
     //- The Draw of p's walk finished to its block, when the tree is as it was at p or changed
@@ -263,7 +283,7 @@ public:
         return true;
     }
 
-    //- sample(c, u) from a Draw d made earlier (finishToBlock()), without a walk: true
+    //- sample(c, u) from a Draw d made earlier by walk() or walkPair(), without a walk: true
     //  and j = the leaf whose interval holds u, when the tree is as it was at d or changed
     //  since by one assign() and that leaf is in d's block of 8 leaves or at most
     //  maxDrawSteps intervals from its ends; false (j untouched) otherwise. d's start (where
@@ -420,15 +440,14 @@ private:
     void coarsen(std::size_t c, int k);
     void setExponent(std::size_t c, int e);
 
-    //- The walks of sample(), walkToNode() (Two false: one walk, c2, u2 and n2 ignored) and
-    //  of samplePair(), walkPairToNode() (Two: two walks interleaved level by level); with
-    //  Fetch the prefetches of big trees. node ends at the leaf (with ToNode at the node of
-    //  level 1), u at u minus the prefix below it.
+    //- The walks of sample(), walk() (Two false: one walk, c2, u2 and n2 ignored) and of
+    //  samplePair(), walkPair() (Two: two walks interleaved level by level); with Fetch the
+    //  prefetches of big trees. node ends at the leaf, u at u minus the prefix below it.
     //  Dispatched to steps compiled for the column count (the node block's size a constant,
     //  as in assign()) and with the levels' prefetches in separate loops: measured, a step
     //  with the runtime block size and every level's prefetch tests took about 60
     //  instructions and spilled the two walks' registers.
-    template<bool Fetch, bool Two, bool ToNode = false>
+    template<bool Fetch, bool Two, int Stop = 0>
 #if defined(__GNUC__)
     __attribute__((always_inline))
 #endif
@@ -437,18 +456,18 @@ private:
                std::size_t leafBytes) const
     {
         switch (ncol_) {
-        case 1: walksFor<1, Fetch, Two, ToNode>(c1, u1, n1, c2, u2, n2, leafData, leafBytes); break;
-        case 2: walksFor<2, Fetch, Two, ToNode>(c1, u1, n1, c2, u2, n2, leafData, leafBytes); break;
-        case 3: walksFor<3, Fetch, Two, ToNode>(c1, u1, n1, c2, u2, n2, leafData, leafBytes); break;
-        case 4: walksFor<4, Fetch, Two, ToNode>(c1, u1, n1, c2, u2, n2, leafData, leafBytes); break;
-        default: walksFor<0, Fetch, Two, ToNode>(c1, u1, n1, c2, u2, n2, leafData, leafBytes);
+        case 1: walksFor<1, Fetch, Two, Stop>(c1, u1, n1, c2, u2, n2, leafData, leafBytes); break;
+        case 2: walksFor<2, Fetch, Two, Stop>(c1, u1, n1, c2, u2, n2, leafData, leafBytes); break;
+        case 3: walksFor<3, Fetch, Two, Stop>(c1, u1, n1, c2, u2, n2, leafData, leafBytes); break;
+        case 4: walksFor<4, Fetch, Two, Stop>(c1, u1, n1, c2, u2, n2, leafData, leafBytes); break;
+        default: walksFor<0, Fetch, Two, Stop>(c1, u1, n1, c2, u2, n2, leafData, leafBytes);
         }
     }
 
     //- walks() for NC columns (ncol_ when NC is 0). With Fetch: the children of the node on
     //  levels 3 to 1 prefetched, and at the leaves the candidates' records and the leaf block's
     //  other columns
-    template<std::size_t NC, bool Fetch, bool Two, bool ToNode>
+    template<std::size_t NC, bool Fetch, bool Two, int Stop>
     void walksFor(std::size_t c1, std::uint64_t& u1, std::size_t& n1, std::size_t c2,
                   std::uint64_t& u2, std::size_t& n2, const void* leafData,
                   std::size_t leafBytes) const
@@ -458,18 +477,23 @@ private:
         std::uint64_t r1 = u1, r2 = Two ? u2 : 0;
         std::size_t k1 = n1, k2 = Two ? n2 : 0;
         std::size_t l = nLevels_;
-        if (Fetch && ToNode) {
-            // the walks of draws made ahead, to a node of level 1: no children prefetched,
-            // that node's line prefetched instead
-            for (; l > 2; --l) {
+        if (Fetch && Stop > 0) {
+            // the walks of draws made ahead, to a block (Stop 1) or a level-1 node (Stop 2):
+            // no children prefetched, the node where they stop prefetched instead
+            for (; l > std::size_t(Stop); --l) {
                 step<NC, false>(l - 1, c1, r1, k1);
                 if (Two) step<NC, false>(l - 1, c2, r2, k2);
             }
+            if (Stop == 1) {
+                fetchLeafData<NC, true>(c1, k1, leafData, leafBytes);
+                if (Two) fetchLeafData<NC, true>(c2, k2, leafData, leafBytes);
+            } else {
 #if defined(__GNUC__)
-            const std::size_t bs = NC > 0 ? NC * fanOut : blockSize_;
-            __builtin_prefetch(levelBase_[1] + k1 * bs + c1 * fanOut);
-            if (Two) __builtin_prefetch(levelBase_[1] + k2 * bs + c2 * fanOut);
+                const std::size_t bs = NC > 0 ? NC * fanOut : blockSize_;
+                __builtin_prefetch(levelBase_[Stop - 1] + k1 * bs + c1 * fanOut);
+                if (Two) __builtin_prefetch(levelBase_[Stop - 1] + k2 * bs + c2 * fanOut);
 #endif
+            }
         } else if (Fetch) {
             for (; l > childFetchLevels + 1; --l) {
                 step<NC, false>(l - 1, c1, r1, k1);
@@ -516,8 +540,7 @@ private:
 
     //- Before the last step from leaf-level node `node`: its 8 candidates' records (leafData:
     //  one leafBytes-sized record per leaf) and the leaf block's other columns, which the
-    //  caller's acceptance reads (MajorantSampler::pairRateAt); with ToBlock (a Draw's block,
-    //  whose last step comes later) column c's too
+    //  caller's acceptance reads (MajorantSampler::pairRateAt)
     template<std::size_t NC, bool ToBlock>
 #if defined(__GNUC__)
     __attribute__((always_inline))
