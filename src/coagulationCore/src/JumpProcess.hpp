@@ -93,9 +93,12 @@ private:
     [[noreturn]] static void badRate(double totalRate, double remaining,
                                      const CellPopulation& pop);
 
-    //- The events of one step from t = 0 to dt, the sampler built; with Ahead, each event
-    //  proposes through draws made ahead during the event before it
-    template<bool Ahead>
+    //- The events of one step from t = 0 to dt, the sampler built; unless notAhead, each event
+    //  proposes through draws made ahead during the event before it (aheadInOnePiece,
+    //  MajorantSampler::lookAhead) or during the two before it (aheadInTwoHalves,
+    //  MajorantSampler::lookTwoAhead)
+    enum Ahead { notAhead, aheadInOnePiece, aheadInTwoHalves };
+    template<Ahead ahead>
     void events(CellPopulation& pop, const CoagulationKernel& kernel, double inceptionRate,
                 double w, double dt, Rng& rng, StepStatistics& stats);
 
@@ -195,7 +198,7 @@ bool JumpProcess<Jump>::accepted(std::size_t j1, const Particle& p1, std::size_t
     const double target = sampler_.targetRate(K, p2);
     // One uniform for every pair, also where it decides nothing (K (w2) equal to the rate it
     // was proposed at), so that a proposal takes a fixed count of the engine's words and the
-    // loop can tell the next proposal's words before this acceptance (events<true>)
+    // loop can tell the next proposal's words before this acceptance (events with draws made ahead)
     const double uAccept = rng.uniform();
     // Accepted when target < proposed and uAccept * proposed < target, or when target >=
     // proposed (equal, or above by round-off); the two compares combined without a branch:
@@ -239,15 +242,17 @@ void JumpProcess<Jump>::advance(CellPopulation& pop, const CoagulationKernel& ke
     P.reserve(capacity);
     sampler_.build(P, capacity);
 
-    if (Jump::lookahead && lookahead_ && sampler_.twoAheadPays()) {
-        events<true>(pop, kernel, inceptionRate, w, dt, rng, stats);
+    if (Jump::lookahead && lookahead_ && sampler_.twoHalvesPay()) {
+        events<aheadInTwoHalves>(pop, kernel, inceptionRate, w, dt, rng, stats);
+    } else if (Jump::lookahead && lookahead_ && sampler_.lookaheadPays()) {
+        events<aheadInOnePiece>(pop, kernel, inceptionRate, w, dt, rng, stats);
     } else {
-        events<false>(pop, kernel, inceptionRate, w, dt, rng, stats);
+        events<notAhead>(pop, kernel, inceptionRate, w, dt, rng, stats);
     }
 }
 
 template <class Jump>
-template <bool Ahead>
+template <typename JumpProcess<Jump>::Ahead ahead>
 void JumpProcess<Jump>::events(CellPopulation& pop, const CoagulationKernel& kernel,
                                double inceptionRate, double w, double dt, Rng& rng,
                                StepStatistics& stats)
@@ -288,19 +293,31 @@ void JumpProcess<Jump>::events(CellPopulation& pop, const CoagulationKernel& ker
         //      (j1 == j2 and rejections are fictitious jumps)
         std::size_t j1 = 0;
         std::size_t j2 = 0;
-        if (Ahead) {
+        if (ahead != notAhead) {
             sampler_.proposeAhead((u - inceptionRate) / scale, n, rng, P.data(), j1, j2);
         } else {
             sampler_.propose((u - inceptionRate) / scale, n, rng, P.data(), j1, j2);
         }
-        if (Ahead) {
+        if (ahead == aheadInOnePiece) {
+            // The next proposal, from the engine's next words (past this pair's acceptance: a
+            // waiting time, a uniform, the walks' integers) and this event's rates, walks the
+            // tree now: its cache misses overlap this event's acceptance and change.
+            // proposeAhead() keeps only what is exact.
+            Rng::Engine peek = rng.engine();
+            if (j1 != j2 && j1 < n && j2 < n) peek();  // the acceptance's uniform
+            peek();
+            const double uNext = Rng::toUniform(peek()) * totalRate;
+            if (uNext >= inceptionRate) {
+                sampler_.lookAhead((uNext - inceptionRate) / scale, n, peek, P.data());
+            }
+        } else if (ahead == aheadInTwoHalves) {
             // The proposal after the next one walks the tree down to level 1 now, and the
             // next one finishes its walks (made during the event before) to their blocks:
-            // each half's cache misses overlap an event's work instead of following it
-            // (MajorantSampler::lookTwoAhead). Their words are the engine's next (past this
-            // pair's acceptance: the next event's waiting time, uniform, two integers and
-            // acceptance, then a waiting time and a uniform, the walks' integers), their
-            // rates this event's; proposeAhead() keeps only what is exact.
+            // each half's cache misses overlap an event's work instead of following it.
+            // Their words are the engine's next (past this pair's acceptance: the next
+            // event's waiting time, uniform, two integers and acceptance, then a waiting time
+            // and a uniform, the walks' integers), their rates this event's; proposeAhead()
+            // keeps only what is exact.
             sampler_.finishLookAhead(P.data());
             Rng::Engine peek = rng.engine();
             if (j1 != j2 && j1 < n && j2 < n) peek();  // the acceptance's uniform

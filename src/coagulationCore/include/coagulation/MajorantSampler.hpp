@@ -212,19 +212,21 @@ public:
         lookAheadColumn(second, n, peek, particles, ahead_.second);
     }
 
-    //- The draws made ahead in two halves (QuantizedSumTree::Partial): lookTwoAhead() makes
-    //  the walks of the proposal after the next one down to level 1 (for an rng whose words
-    //  after the next proposal's are those of `peek`, with the rates as they are now), and
+    //- The draws made ahead in two halves (QuantizedSumTree::Partial), for a tree where they
+    //  pay more than lookAhead() (twoHalvesPay()): lookTwoAhead() makes the walks of the
+    //  proposal after the next one down to level 1 (for an rng whose words after the next
+    //  proposal's are those of `peek`, with the rates as they are now), and
     //  finishLookAhead(), an event later, finishes them to their blocks as the draws that
     //  lookAhead() would have made for the next proposal (or none, when the term's totals
     //  are empty or the tree has changed by more than one assign() since). Each half's cache
-    //  misses are taken an event before its loads. For a tree of at least 2 levels.
-    bool twoAheadPays() const { return lookaheadPays() && tree_.levels() >= 2; }
+    //  misses are taken an event before its loads.
+    bool twoHalvesPay() const { return lookaheadPays() && tree_.twoHalvesPay(); }
     void lookTwoAhead(double u, std::size_t n, Rng::Engine& peek, const Particle* particles)
     {
         const std::size_t term = chooseTerm(u);
         const Column& first = columns_[termFirst_[term]];
         const Column& second = columns_[termSecond_[term]];
+        // as in lookAhead(): a walk kept off an empty column
         partial_.valid = (first.uniform || tree_.totalInteger(first.tree) > 0)
                          && (second.uniform || tree_.totalInteger(second.tree) > 0);
         if (!partial_.valid) return;

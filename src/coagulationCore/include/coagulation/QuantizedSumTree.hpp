@@ -203,6 +203,15 @@ public:
     //  cost more than they hide; before that change the threshold was 2 MiB)
     bool lookaheadPays() const { return memoryBytes() >= lookaheadBytes; }
 
+    //- Whether draws made ahead in two halves (walkToNode(), finishToBlock()) pay more than
+    //  in one piece (walk(), walkPair()): the tree is bigger than 6 MiB, its level 1 about
+    //  three quarters of a MiB (measured as lookaheadPays(), ninth session, medians of 6-8
+    //  ABBA rounds: 16 % fewer ns per event at N = 1e6 (27 MB tree), 4 % at 3e5 and 2 % at
+    //  2.5e5 (6.8 MB); 1 % more at 2e5 (5.5 MB), 4 % at 1.5e5 and 1e5, 6 % at 5e4: the
+    //  second half's words and state cost more than they hide while level 1 stays in the L2
+    //  cache). At least 2 levels, so that level 1 exists.
+    bool twoHalvesPay() const { return memoryBytes() >= twoHalvesBytes && levels() >= 2; }
+
     //- The walks of samplePair() (its prefetches included) for u1 and u2, kept as Draws
     void walkPair(std::size_t c1, std::uint64_t u1, std::size_t c2, std::uint64_t u2,
                   const void* leafData, std::size_t leafBytes, Draw& d1, Draw& d2) const
@@ -665,6 +674,8 @@ private:
     bool prefetch_ = false;
     //- lookaheadPays() from this size of the tree array
     static constexpr std::size_t lookaheadBytes = 1280 * 1024;
+    //- twoHalvesPay() from this size of the tree array
+    static constexpr std::size_t twoHalvesBytes = 6 * 1024 * 1024;
 
     //- Changes counted for drawNear(): one per addToPath(), whose leaf and deltas are kept;
     //  two for any other change of leaves or scales (reset, rebuild, resizeCapacity), which
