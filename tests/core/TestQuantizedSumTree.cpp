@@ -37,6 +37,22 @@ void expectQuantisationOf(QuantizedSumTree& tree, const std::vector<std::vector<
     for (std::size_t c = 0; c < tree.columns(); ++c) ASSERT_EQ(tree.totalInteger(c), totals[c]);
 }
 
+//- A 3-column tree over n leaves of Exp(1) values (every fifth zero, by leaf and column, when
+//  withZeros), staged and built; v holds the values, leaf by leaf
+void buildRandomTree(QuantizedSumTree& tree, std::size_t n, Rng& rng, std::vector<double>& v,
+                     bool withZeros)
+{
+    tree.reset(3, n);
+    v.assign(3 * n, 0.0);
+    for (std::size_t j = 0; j < n; ++j) {
+        for (std::size_t c = 0; c < 3; ++c) {
+            v[3 * j + c] = withZeros && (j + c) % 5 == 1 ? 0.0 : rng.exponential(1.0);
+            tree.stage(j, c, v[3 * j + c]);
+        }
+    }
+    tree.finishBuild(n);
+}
+
 } // namespace
 
 TEST(QuantizedSumTree, BuildQuantisesEachColumnBelowItsLargestValue)
@@ -171,16 +187,9 @@ TEST(QuantizedSumTree, DrawsMadeAheadAreTheWalksDrawsOrDeclined)
 {
     for (const std::size_t n : {std::size_t(5), std::size_t(300), std::size_t(20000)}) {
         QuantizedSumTree tree;
-        tree.reset(3, n);
         Rng rng(31 + n);
-        std::vector<double> v(3 * n);
-        for (std::size_t j = 0; j < n; ++j) {
-            for (std::size_t c = 0; c < 3; ++c) {
-                v[3 * j + c] = (j + c) % 5 == 1 ? 0.0 : rng.exponential(1.0);
-                tree.stage(j, c, v[3 * j + c]);
-            }
-        }
-        tree.finishBuild(n);
+        std::vector<double> v;
+        buildRandomTree(tree, n, rng, v, true);
         std::vector<double> leafData(tree.capacity());
         std::size_t tried = 0, taken = 0, nearTried = 0, nearTaken = 0;
         std::size_t takenLeft = 0, takenRight = 0;  // outside the Draw's block
@@ -312,16 +321,9 @@ TEST(QuantizedSumTree, DrawsMadeInTwoHalvesAreWalksDraws)
     for (const std::size_t n : {std::size_t(9), std::size_t(300), std::size_t(5000),
                                 std::size_t(20000)}) {
         QuantizedSumTree tree;
-        tree.reset(3, n);
         Rng rng(77 + n);
-        std::vector<double> v(3 * n);
-        for (std::size_t j = 0; j < n; ++j) {
-            for (std::size_t c = 0; c < 3; ++c) {
-                v[3 * j + c] = rng.exponential(1.0);
-                tree.stage(j, c, v[3 * j + c]);
-            }
-        }
-        tree.finishBuild(n);
+        std::vector<double> v;
+        buildRandomTree(tree, n, rng, v, false);
         ASSERT_GE(tree.levels(), 2u) << "level 1 exists";
         std::vector<double> leafData(tree.capacity());
         std::size_t finished = 0, declined = 0, pastTotal = 0;

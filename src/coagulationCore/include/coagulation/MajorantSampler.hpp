@@ -192,24 +192,15 @@ public:
 
     void lookAhead(double u, std::size_t n, Rng::Engine& peek, const Particle* particles)
     {
-        const std::size_t term = chooseTerm(u);
-        const Column& first = columns_[termFirst_[term]];
-        const Column& second = columns_[termSecond_[term]];
-        // a term of positive rate (chooseTerm) has positive totals; the guard keeps a walk
-        // off an empty column (u = 0 would step past the tree's last nodes) whatever the rates
-        ahead_.valid = (first.uniform || tree_.totalInteger(first.tree) > 0)
-                       && (second.uniform || tree_.totalInteger(second.tree) > 0);
-        if (!ahead_.valid) return;
-        ahead_.term = term;
-        if (!first.uniform && !second.uniform) {
-            const std::uint64_t u1 = Rng::predictedIndex(peek(), tree_.totalInteger(first.tree));
-            const std::uint64_t u2 = Rng::predictedIndex(peek(), tree_.totalInteger(second.tree));
-            tree_.walkPair(first.tree, u1, second.tree, u2, particles, sizeof(Particle),
-                           ahead_.first, ahead_.second);
-            return;
-        }
-        lookAheadColumn(first, n, peek, particles, ahead_.first);
-        lookAheadColumn(second, n, peek, particles, ahead_.second);
+        lookAheadInto(
+            u, n, peek, particles, ahead_,
+            [this, particles](std::size_t c1, std::uint64_t u1, std::size_t c2, std::uint64_t u2,
+                              QuantizedSumTree::Draw& d1, QuantizedSumTree::Draw& d2) {
+                tree_.walkPair(c1, u1, c2, u2, particles, sizeof(Particle), d1, d2);
+            },
+            [this, particles](std::size_t c, std::uint64_t u, QuantizedSumTree::Draw& d) {
+                tree_.walk(c, u, particles, sizeof(Particle), d);
+            });
     }
 
     //- The draws made ahead in two halves (QuantizedSumTree::Partial), for a tree where they
@@ -223,23 +214,15 @@ public:
     bool twoHalvesPay() const { return lookaheadPays() && tree_.twoHalvesPay(); }
     void lookTwoAhead(double u, std::size_t n, Rng::Engine& peek, const Particle* particles)
     {
-        const std::size_t term = chooseTerm(u);
-        const Column& first = columns_[termFirst_[term]];
-        const Column& second = columns_[termSecond_[term]];
-        // as in lookAhead(): a walk kept off an empty column
-        partial_.valid = (first.uniform || tree_.totalInteger(first.tree) > 0)
-                         && (second.uniform || tree_.totalInteger(second.tree) > 0);
-        if (!partial_.valid) return;
-        partial_.term = term;
-        if (!first.uniform && !second.uniform) {
-            const std::uint64_t u1 = Rng::predictedIndex(peek(), tree_.totalInteger(first.tree));
-            const std::uint64_t u2 = Rng::predictedIndex(peek(), tree_.totalInteger(second.tree));
-            tree_.walkPairToNode(first.tree, u1, second.tree, u2, partial_.first,
-                                 partial_.second);
-            return;
-        }
-        lookTwoAheadColumn(first, n, peek, particles, partial_.first);
-        lookTwoAheadColumn(second, n, peek, particles, partial_.second);
+        lookAheadInto(
+            u, n, peek, particles, partial_,
+            [this](std::size_t c1, std::uint64_t u1, std::size_t c2, std::uint64_t u2,
+                   QuantizedSumTree::Partial& p1, QuantizedSumTree::Partial& p2) {
+                tree_.walkPairToNode(c1, u1, c2, u2, p1, p2);
+            },
+            [this](std::size_t c, std::uint64_t u, QuantizedSumTree::Partial& p) {
+                tree_.walkToNode(c, u, p);
+            });
     }
     void finishLookAhead(const Particle* particles)
     {
@@ -395,27 +378,41 @@ private:
         return lastTerm_;
     }
 
-    //- lookAhead() for one column: a tree column's walk kept in d; for a uniform one the
-    //  predicted particle's record and tree path prefetched
-    void lookAheadColumn(const Column& col, std::size_t n, Rng::Engine& peek,
-                         const Particle* particles, QuantizedSumTree::Draw& d) const
-    {
-        if (col.uniform) {
-            const std::size_t j = Rng::predictedIndex(peek(), n);
+    //- lookAhead() and lookTwoAhead() into `into` (valid, term, first, second): the term for
+    //  u, and its factors' walks for the integers of peek's next words (pairWalk for two tree
+    //  columns, interleaved; else columnWalk for a tree column, and for a uniform one the
+    //  predicted particle's record and tree path prefetched)
+    template <class Into, class PairWalk, class ColumnWalk>
 #if defined(__GNUC__)
-            __builtin_prefetch(&particles[j]);
+    __attribute__((always_inline))
 #endif
-            tree_.prefetchPath(j);
-        } else {
-            tree_.walk(col.tree, Rng::predictedIndex(peek(), tree_.totalInteger(col.tree)),
-                       particles, sizeof(Particle), d);
+    void lookAheadInto(double u, std::size_t n, Rng::Engine& peek, const Particle* particles,
+                       Into& into, PairWalk pairWalk, ColumnWalk columnWalk)
+    {
+        const std::size_t term = chooseTerm(u);
+        const Column& first = columns_[termFirst_[term]];
+        const Column& second = columns_[termSecond_[term]];
+        // a term of positive rate (chooseTerm) has positive totals; the guard keeps a walk
+        // off an empty column (u = 0 would step past the tree's last nodes) whatever the rates
+        into.valid = (first.uniform || tree_.totalInteger(first.tree) > 0)
+                     && (second.uniform || tree_.totalInteger(second.tree) > 0);
+        if (!into.valid) return;
+        into.term = term;
+        if (!first.uniform && !second.uniform) {
+            const std::uint64_t u1 = Rng::predictedIndex(peek(), tree_.totalInteger(first.tree));
+            const std::uint64_t u2 = Rng::predictedIndex(peek(), tree_.totalInteger(second.tree));
+            pairWalk(first.tree, u1, second.tree, u2, into.first, into.second);
+            return;
         }
+        lookAheadColumn(first, n, peek, particles, into.first, columnWalk);
+        lookAheadColumn(second, n, peek, particles, into.second, columnWalk);
     }
-
-    //- lookTwoAhead() for one column: a tree column's walk to level 1 kept in p; for a
-    //  uniform one the predicted particle's record and tree path prefetched
-    void lookTwoAheadColumn(const Column& col, std::size_t n, Rng::Engine& peek,
-                            const Particle* particles, QuantizedSumTree::Partial& p) const
+    template <class Result, class ColumnWalk>
+#if defined(__GNUC__)
+    __attribute__((always_inline))
+#endif
+    void lookAheadColumn(const Column& col, std::size_t n, Rng::Engine& peek,
+                         const Particle* particles, Result& result, ColumnWalk& columnWalk) const
     {
         if (col.uniform) {
             const std::size_t j = Rng::predictedIndex(peek(), n);
@@ -424,8 +421,7 @@ private:
 #endif
             tree_.prefetchPath(j);
         } else {
-            tree_.walkToNode(col.tree, Rng::predictedIndex(peek(), tree_.totalInteger(col.tree)),
-                             p);
+            columnWalk(col.tree, Rng::predictedIndex(peek(), tree_.totalInteger(col.tree)), result);
         }
     }
 
