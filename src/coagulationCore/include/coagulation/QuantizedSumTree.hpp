@@ -183,11 +183,12 @@ public:
         j2 = n2;
     }
 
-    //- Draws made ahead of time (issue 19's lookahead, MajorantSampler::lookAhead). A walk
-    //  for a random integer predicted before the change that precedes the real draw is kept
-    //  as a Draw: its leaf, where that leaf's interval [start, start + q) of the column's
-    //  integers began, and the tree's version then. drawNear() turns it into the real draw
-    //  without a walk; the walk's cache misses were taken earlier, overlapping other work.
+    //- Draws made ahead of time (issue 19's lookahead, MajorantSampler::lookAhead and
+    //  lookTwoAhead). A walk for a random integer predicted before the change that precedes
+    //  the real draw is kept as a Draw: the first leaf of its block of 8, where that leaf's
+    //  interval [start, start + q) of the column's integers began, and the tree's version
+    //  then. drawNear() turns it into the real draw with the walk's last step; the walk's
+    //  cache misses were taken earlier, overlapping other work.
     struct Draw {
         std::size_t leaf = 0;
         std::uint64_t start = 0;
@@ -212,7 +213,9 @@ public:
     //  cache). At least 2 levels, so that level 1 exists.
     bool twoHalvesPay() const { return memoryBytes() >= twoHalvesBytes && levels() >= 2; }
 
-    //- The walks of samplePair() (its prefetches included) for u1 and u2, kept as Draws
+    //- The walks of samplePair() for u1 and u2 down to their blocks, kept as Draws: no
+    //  children prefetched on the way, the blocks' lines (every column) and their candidates'
+    //  records prefetched at the end, not loaded (the proposal's drawNear() loads them)
     void walkPair(std::size_t c1, std::uint64_t u1, std::size_t c2, std::uint64_t u2,
                   const void* leafData, std::size_t leafBytes, Draw& d1, Draw& d2) const
     {
@@ -223,7 +226,7 @@ public:
         d1 = Draw{n1 * fanOut, u1 - r1, version_};
         d2 = Draw{n2 * fanOut, u2 - r2, version_};
     }
-    //- The walk of sample() (its prefetches included) for u, kept as a Draw
+    //- walkPair() for one walk: sample()'s for u down to its block, kept as a Draw
     void walk(std::size_t c, std::uint64_t u, const void* leafData, std::size_t leafBytes,
               Draw& d) const
     {
@@ -449,9 +452,11 @@ private:
     void coarsen(std::size_t c, int k);
     void setExponent(std::size_t c, int e);
 
-    //- The walks of sample(), walk() (Two false: one walk, c2, u2 and n2 ignored) and of
-    //  samplePair(), walkPair() (Two: two walks interleaved level by level); with Fetch the
-    //  prefetches of big trees. node ends at the leaf, u at u minus the prefix below it.
+    //- The walks of sample(), walk(), walkToNode() (Two false: one walk, c2, u2 and n2
+    //  ignored) and of samplePair(), walkPair(), walkPairToNode() (Two: two walks interleaved
+    //  level by level); with Fetch the prefetches of big trees. node ends at the leaf (Stop
+    //  1: at the block, the leaf-level node; Stop 2: at the node of level 1), u at u minus
+    //  the prefix below it.
     //  Dispatched to steps compiled for the column count (the node block's size a constant,
     //  as in assign()) and with the levels' prefetches in separate loops: measured, a step
     //  with the runtime block size and every level's prefetch tests took about 60
