@@ -171,8 +171,8 @@ TEST(MajorantSampler, PairRateFromTheLeavesIsThePairRateFromTheParticles)
 //  streams, one looking ahead with the stream's next words (or, every third proposal,
 //  with other words), for 4 kernels (SWA's weighted second factors); and a third making
 //  its draws ahead in two halves (lookTwoAhead() for the proposal after next,
-//  finishLookAhead() for the next), the same way. A bigger tree than the rest of this file (400 particles, 3 levels),
-//  so that the draws made ahead have walks to save.
+//  finishLookAhead() for the next), the same way. A bigger tree than the rest of this file
+//  (400 particles, 3 levels), so that the draws made ahead have walks to save.
 TEST(MajorantSampler, ProposalsDrawnAheadAreTheProposals)
 {
     for (const char* name : {"additive", "multiplicative", "saffmanTurner", "constant"}) {

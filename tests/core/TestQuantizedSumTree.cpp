@@ -342,9 +342,11 @@ TEST(QuantizedSumTree, DrawsMadeInTwoHalvesAreWalksDraws)
             const int kind = round % 3;  // no change, one, or two
             for (int k = 0; k < kind; ++k) {
                 // the last leaves shrink as often as any: integers past the total follow
-                const std::size_t j = round % 2 ? n - 1 - rng.uniformIndex(std::min<std::size_t>(n, 8))
-                                                : rng.uniformIndex(n);
-                const double factor = 0.25 * rng.uniform() + (round % 2 ? 0.0 : 0.5 + rng.uniform());
+                const std::size_t last = std::min<std::size_t>(n, 8);
+                const std::size_t j =
+                    round % 2 ? n - 1 - rng.uniformIndex(last) : rng.uniformIndex(n);
+                const double grow = round % 2 ? 0.0 : 0.5 + rng.uniform();
+                const double factor = 0.25 * rng.uniform() + grow;
                 double values[3];
                 for (std::size_t c = 0; c < 3; ++c) values[c] = v[3 * j + c] * factor;
                 tree.assign(j, values);
