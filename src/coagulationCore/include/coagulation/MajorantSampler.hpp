@@ -181,8 +181,9 @@ public:
 
     //- Draws made ahead (issue 19: software pipelining of the event loop). lookAhead() makes
     //  the proposal that propose(u, n, rng, particles) would make now for an rng whose next
-    //  words are those of `peek`: the same term and walks, kept. The next proposeAhead(), the
-    //  same as propose() otherwise, takes their leaves through QuantizedSumTree::drawNear()
+    //  words are those of `peek`: the same term, and walks down to their blocks of 8 leaves,
+    //  kept. The next proposeAhead(), the same as propose() otherwise, takes their leaves
+    //  through QuantizedSumTree::drawNear() (the walks' last steps)
     //  for its own random integers, exact, and walks where that declines (another term, a
     //  change other than one set(), a leaf farther than a few intervals). So the results
     //  are propose()'s bit for bit, and a caller that calls lookAhead() before its change of
@@ -492,7 +493,8 @@ private:
     double phi_[maxBasis] = {};
     double phi2_[maxBasis] = {};
     std::size_t lastTerm_ = 0;       // rateSum(): the last term with a positive rate
-    //- lookAhead()'s draws for the next proposeAhead(): its term and the tree columns' walks
+    //- lookAhead()'s (or finishLookAhead()'s) draws for the next proposeAhead(): its term and
+    //  the tree columns' walks to their blocks
     struct Ahead {
         bool valid = false;
         std::size_t term = 0;
