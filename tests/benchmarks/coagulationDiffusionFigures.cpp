@@ -16,8 +16,8 @@
 //       §7, Saffman-Turner K_ij = (i^1/3 + j^1/3)^3 / 8, units t' = t/T_D, x' = x/R (D' = 1):
 //       CSV "x,b,t,ND,NCD,ND_est,ND_hw,NCD_est,NCD_hw" at x' = (0, 0) and (1.5, 0),
 //       b = 0.01, 0.1, 1: N^D (29), N^CD = u_1(b t') N^D (30), and both by the adjoint estimator.
-#include "coagulation/CoagulationDiffusionLagrangian.hpp"
-#include "coagulation/CoagulationDiffusionReference.hpp"
+#include "coagulationReferences/coagulationDiffusion/CoagulationDiffusionLagrangian.hpp"
+#include "coagulationReferences/coagulationDiffusion/CoagulationDiffusionReference.hpp"
 
 #include <chrono>
 #include <cmath>

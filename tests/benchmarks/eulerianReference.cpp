@@ -11,8 +11,8 @@
 // stderr. nL is the Lagrangian model (9) in closed form for the constant kernel: with data
 // uniform in G and v = 0, rho(t; n0) is the same for every x0 in G, so
 // nL_l(t, x) = u_l(t) N^D(t, x), u the exact constant-kernel solution (README (30) form).
-#include "coagulation/CoagulationDiffusionReference.hpp"
-#include "coagulation/ExactSolutions.hpp"
+#include "coagulationReferences/coagulationDiffusion/CoagulationDiffusionReference.hpp"
+#include "coagulationReferences/smoluchowski/ExactSolutions.hpp"
 
 #include <chrono>
 #include <cstdio>

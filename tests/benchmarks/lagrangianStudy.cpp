@@ -26,8 +26,9 @@
 // <Sp_l> = <In_l>/<In> and <Ms> = <mass>/<In> over all realisations (ExpectationFunctionals);
 // the columns *_perRealisation hold the mean of each realisation's own ratio over the
 // realisations with a cluster in Omega_r (not the paper's functional; kept for comparison).
-#include "coagulation/LagrangianCoagulation.hpp"
-#include "coagulation/PseudoTurbulence.hpp"
+#include "coagulationReferences/lagrangian/LagrangianCoagulation.hpp"
+#include "coagulationReferences/pseudoTurbulence/PseudoTurbulence.hpp"
+#include "coagulation/random/SplitMix64.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -65,10 +66,7 @@ std::string fmt(double x)
 
 std::uint64_t mix(std::uint64_t a, std::uint64_t b)
 {
-    std::uint64_t z = a * 0x9E3779B97F4A7C15ULL + b + 0x632BE59BD9B4E019ULL;
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    return z ^ (z >> 31);
+    return coag::splitMix64Finalise(a * coag::splitMix64Golden + b + 0x632BE59BD9B4E019ULL);
 }
 
 // Per radius: the functionals of the expectations (the paper's <In>, <Ms> = <mass>/<In>,

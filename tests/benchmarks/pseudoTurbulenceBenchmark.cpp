@@ -6,8 +6,8 @@
 // a field (construction). Each figure is the fastest of `repeats` blocks.
 //
 // Usage: pseudoTurbulenceBenchmark [evaluationsPerBlock (default 2e5)] [repeats (default 3)]
-#include "coagulation/PseudoTurbulence.hpp"
-#include "coagulation/Rng.hpp"
+#include "coagulationReferences/pseudoTurbulence/PseudoTurbulence.hpp"
+#include "coagulation/random/Rng.hpp"
 
 #include <algorithm>
 #include <chrono>

@@ -10,9 +10,9 @@
 //                         --R 4 --T 2 --rate 1 --points 20000 --radii 2,4,6,8 --dt 0.02]
 // CSV on stdout: r, In (estimate), In_se (standard error), In_v0 (no transport, exact), mass,
 // mass_se.
-#include "coagulation/LagrangianCoagulation.hpp"
-#include "coagulation/PseudoTurbulence.hpp"
-#include "coagulation/Dispersion.hpp"
+#include "coagulationReferences/lagrangian/LagrangianCoagulation.hpp"
+#include "coagulationReferences/pseudoTurbulence/PseudoTurbulence.hpp"
+#include "coagulation/random/CounterStream.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -4,7 +4,7 @@
 // diffusion of the square (no coagulation), and its convergence in dx, dt and gamma.
 #include "TestHelpers.hpp"
 
-#include "coagulation/CoagulationDiffusionReference.hpp"
+#include "coagulationReferences/coagulationDiffusion/CoagulationDiffusionReference.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -6,9 +6,9 @@
 // Fixed seeds; every interval comes from the run (95 %, iid samples).
 #include "TestHelpers.hpp"
 
-#include "coagulation/CoagulationDiffusionLagrangian.hpp"
-#include "coagulation/CoagulationDiffusionReference.hpp"
-#include "coagulation/ExactSolutions.hpp"
+#include "coagulationReferences/coagulationDiffusion/CoagulationDiffusionLagrangian.hpp"
+#include "coagulationReferences/coagulationDiffusion/CoagulationDiffusionReference.hpp"
+#include "coagulationReferences/smoluchowski/ExactSolutions.hpp"
 
 #include <cmath>
 #include <iostream>

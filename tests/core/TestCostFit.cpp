@@ -2,7 +2,7 @@
 // CostFit: the least-squares cost of a cell step that cellWork prints (issue 19)
 #include "TestHelpers.hpp"
 
-#include "coagulation/CostFit.hpp"
+#include "coagulation/decomposition/CostFit.hpp"
 
 #include <cmath>
 

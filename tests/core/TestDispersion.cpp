@@ -9,14 +9,8 @@ using namespace coagtest;
 
 namespace {
 
-// Keys as the solver makes them: hashed (SplitMix64 finaliser) from a counter
-std::uint64_t hashedKey(std::uint64_t i)
-{
-    std::uint64_t z = i + 0x9e3779b97f4a7c15ULL;
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-}
+// Keys as the solver makes them: hashed (SplitMix64) from a counter
+std::uint64_t hashedKey(std::uint64_t i) { return mix64(i); }
 
 } // namespace
 

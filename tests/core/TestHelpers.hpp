@@ -3,7 +3,9 @@
 #define COAGULATION_TESTS_TESTHELPERS_HPP
 
 #include "coagulation/coagulation.hpp"
-#include "coagulation/SmoluchowskiReference.hpp"
+#include "coagulationReferences/smoluchowski/ExactSolutions.hpp"
+#include "coagulationReferences/smoluchowski/NanbuMethod.hpp"
+#include "coagulationReferences/smoluchowski/SmoluchowskiReference.hpp"
 
 #include <gtest/gtest.h>
 
@@ -21,10 +23,7 @@ using namespace coag;
 //- Independent, well-mixed seeds for realisation r of a test.
 inline std::uint64_t seedFor(std::uint64_t base, std::uint64_t r)
 {
-    std::uint64_t z = base * 0x9E3779B97F4A7C15ULL + r + 0x632BE59BD9B4E019ULL;
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    return z ^ (z >> 31);
+    return splitMix64Finalise(base * splitMix64Golden + r + 0x632BE59BD9B4E019ULL);
 }
 
 //- N unit-mass particles of the given weight in a cell of the given volume.

@@ -6,10 +6,10 @@
 // Fixed seeds; the statistical checks use intervals computed from their own samples.
 #include "TestHelpers.hpp"
 
-#include "coagulation/ExactSolutions.hpp"
-#include "coagulation/LagrangianCoagulation.hpp"
-#include "coagulation/PseudoTurbulence.hpp"
-#include "coagulation/SmoluchowskiReference.hpp"
+#include "coagulationReferences/smoluchowski/ExactSolutions.hpp"
+#include "coagulationReferences/lagrangian/LagrangianCoagulation.hpp"
+#include "coagulationReferences/pseudoTurbulence/PseudoTurbulence.hpp"
+#include "coagulationReferences/smoluchowski/SmoluchowskiReference.hpp"
 
 #include <cmath>
 #include <complex>

@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 // The big arrays of the event loop (LargeArray.hpp): sizes, alignment, the huge-page advice
 // (Linux), and the particle records of a cell kept through a vector's growth.
-#include "coagulation/CellPopulation.hpp"
-#include "coagulation/LargeArray.hpp"
+#include "coagulation/population/CellPopulation.hpp"
+#include "coagulation/population/LargeArray.hpp"
 
 #include <gtest/gtest.h>
 

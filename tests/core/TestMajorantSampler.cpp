@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 // MajorantSampler on its own: the summed majorant rate and the law of its pair proposals.
-#include "coagulation/MajorantSampler.hpp"
+#include "coagulation/sampling/MajorantSampler.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,8 +16,8 @@ namespace {
 //  Khat(z1, z2) w2 / sum (weightedSecond, SWA) or Khat(z1, z2) / sum (DSA), and rateSum is that
 //  sum; checked for the additive (tree columns only) and the multiplicative-plus-constant
 //  shapes by a chi-square test over all 16 pairs (fixed seed, 15 degrees of freedom, 0.1 %
-//  critical value 37.7), with the columns in the sum tree and in the octave bins (binned).
-void checkProposals(const CoagulationKernel& kernel, bool weightedSecond, bool binned)
+//  critical value 37.7).
+void checkProposals(const CoagulationKernel& kernel, bool weightedSecond)
 {
     const std::vector<Particle> P{{ParticleType{1.0}, 1.0, 0},
                                   {ParticleType{2.0}, 0.5, 1},
@@ -26,7 +26,6 @@ void checkProposals(const CoagulationKernel& kernel, bool weightedSecond, bool b
     const std::size_t n = P.size();
     MajorantSampler sampler(weightedSecond);
     sampler.configure(kernel, "test");
-    if (binned) sampler.setBinnedFrom(0);
     sampler.build(P, 8);
 
     std::vector<double> expected(n * n);
@@ -56,19 +55,16 @@ void checkProposals(const CoagulationKernel& kernel, bool weightedSecond, bool b
         const double e = draws * expected[c] / sum;
         chi2 += (count[c] - e) * (count[c] - e) / e;
     }
-    EXPECT_LT(chi2, 37.7) << kernel.name() << (weightedSecond ? " weighted" : " unweighted")
-                          << (binned ? " binned" : " tree");
+    EXPECT_LT(chi2, 37.7) << kernel.name() << (weightedSecond ? " weighted" : " unweighted");
 }
 
 TEST(MajorantSampler, ProposesPairsByTheMajorant)
 {
-    for (bool binned : {false, true}) {
-        for (bool weighted : {true, false}) {
-            checkProposals(*makeKernel("additive", 1.5), weighted, binned);
-            checkProposals(*makeKernel("multiplicative", 0.5), weighted, binned);
-            checkProposals(*makeKernel("constant", 2.0), weighted, binned);
-            checkProposals(*makeKernel("saffmanTurner", 0.5), weighted, binned);
-        }
+    for (bool weighted : {true, false}) {
+        checkProposals(*makeKernel("additive", 1.5), weighted);
+        checkProposals(*makeKernel("multiplicative", 0.5), weighted);
+        checkProposals(*makeKernel("constant", 2.0), weighted);
+        checkProposals(*makeKernel("saffmanTurner", 0.5), weighted);
     }
 }
 
@@ -103,7 +99,7 @@ TEST(MajorantSampler, PairRatesSumToTheRateSumAndMajoriseTheKernel)
     }
 }
 
-//- pairRateAt(j1, p1, j2, p2), which reads the tree's leaves, is pairRate(p1, p2), which
+//- pairRateAt(j1, j2), which reads the tree's leaves, is pairRate(p1, p2), which
 //  quantises the particles' values afresh, bit for bit: after the build, after changes in
 //  place, after coarsenings (a particle a million times heavier than the column's largest),
 //  after appends that grow the tree (fewer bits a leaf: every column coarsened) and after
@@ -127,7 +123,7 @@ TEST(MajorantSampler, PairRateFromTheLeavesIsThePairRateFromTheParticles)
                 sampler.rateSum(n);
                 for (int k = 0; k < 25; ++k) {
                     const std::size_t a = rng.uniformIndex(n), b = rng.uniformIndex(n);
-                    ASSERT_EQ(sampler.pairRateAt(a, P[a], b, P[b]), sampler.pairRate(P[a], P[b]))
+                    ASSERT_EQ(sampler.pairRateAt(a, b), sampler.pairRate(P[a], P[b]))
                         << name << (weighted ? " weighted" : "") << " after " << after;
                     ++compared;
                 }
@@ -258,28 +254,8 @@ TEST(MajorantSampler, ProposalsDrawnAheadAreTheProposals)
     }
 }
 
-//- The store is chosen by the capacity at build()
-TEST(MajorantSampler, ChoosesTheBinsFromBinnedFrom)
-{
-    auto kernel = makeKernel("additive", 1.0);
-    const std::vector<Particle> P(10);
-    MajorantSampler sampler(true);
-    sampler.configure(*kernel, "test");
-    EXPECT_EQ(sampler.binnedFrom(), MajorantSampler::defaultBinnedFrom);
-    sampler.build(P, 100);
-    EXPECT_FALSE(sampler.binned());
-    sampler.setBinnedFrom(100);
-    sampler.build(P, 99);
-    EXPECT_FALSE(sampler.binned());
-    sampler.build(P, 100);
-    EXPECT_TRUE(sampler.binned());
-    EXPECT_GE(sampler.capacity(), 100u);
-}
-
 //- After a removal by swap and a change in place the sums follow the particles
-class MajorantSamplerStore : public ::testing::TestWithParam<bool> {};
-
-TEST_P(MajorantSamplerStore, FollowsChangesAndRemovals)
+TEST(MajorantSamplerStore, FollowsChangesAndRemovals)
 {
     auto kernel = makeKernel("additive", 1.0);
     std::vector<Particle> P{{ParticleType{1.0}, 1.0, 0},
@@ -287,7 +263,6 @@ TEST_P(MajorantSamplerStore, FollowsChangesAndRemovals)
                             {ParticleType{4.0}, 1.0, 2}};
     MajorantSampler sampler(true);
     sampler.configure(*kernel, "test");
-    if (GetParam()) sampler.setBinnedFrom(0);
     sampler.build(P, 3);
     auto direct = [&] {
         double s = 0.0;
@@ -311,14 +286,13 @@ TEST_P(MajorantSamplerStore, FollowsChangesAndRemovals)
 //- After many accepted-style changes (SWA's eq 21 on random pairs), appends and removals,
 //  the proposals still follow Khat w2: chi-square of the first and the second index
 //  against their exact marginals (0.1 % critical values).
-TEST_P(MajorantSamplerStore, ProposalsFollowAChangingPopulation)
+TEST(MajorantSamplerStore, ProposalsFollowAChangingPopulation)
 {
     auto kernel = makeKernel("additive", 1.0);
     std::vector<Particle> P;
     for (int j = 0; j < 30; ++j) P.push_back(Particle{ParticleType{1.0 + j % 4}, 1.0, j});
     MajorantSampler sampler(true);
     sampler.configure(*kernel, "test");
-    if (GetParam()) sampler.setBinnedFrom(0);
     sampler.build(P, P.size());
     Rng rng(99);
     for (int s = 0; s < 400; ++s) {
@@ -375,10 +349,6 @@ TEST_P(MajorantSamplerStore, ProposalsFollowAChangingPopulation)
     EXPECT_LT(chi2, crit) << n << " particles";
 }
 
-INSTANTIATE_TEST_SUITE_P(Stores, MajorantSamplerStore, ::testing::Values(false, true),
-                         [](const ::testing::TestParamInfo<bool>& i) {
-                             return i.param ? std::string("bins") : std::string("tree");
-                         });
 
 } // namespace
 

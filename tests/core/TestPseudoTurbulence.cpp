@@ -5,7 +5,7 @@
 // Fixed seeds; every statistical check uses an interval computed from its samples.
 #include "TestHelpers.hpp"
 
-#include "coagulation/PseudoTurbulence.hpp"
+#include "coagulationReferences/pseudoTurbulence/PseudoTurbulence.hpp"
 
 #include <algorithm>
 #include <cmath>

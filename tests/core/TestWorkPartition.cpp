@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 #include "TestHelpers.hpp"
 
-#include "coagulation/WorkPartition.hpp"
+#include "coagulation/decomposition/WorkPartition.hpp"
 
 #include <algorithm>
 #include <functional>

@@ -20,7 +20,7 @@
 // discrete divergence |sum_f (U_f . S_f)| / (sum_f |U_f| |S_f|) per cell (linear face values).
 #include "fvCFD.H"
 
-#include "coagulation/PseudoTurbulence.hpp"
+#include "coagulationReferences/pseudoTurbulence/PseudoTurbulence.hpp"
 
 int main(int argc, char* argv[])
 {

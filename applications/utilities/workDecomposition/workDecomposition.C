@@ -40,7 +40,7 @@
 #include "labelIOList.H"
 #include "timeSelector.H"
 
-#include "coagulation/WorkPartition.hpp"
+#include "coagulation/decomposition/WorkPartition.hpp"
 
 #include <algorithm>
 #include <numeric>

@@ -55,30 +55,28 @@ SAMPLES = "src/python/coagulationPost/samples.py"
 CHECKS = "src/python/coagulationPost/checks.py"
 DISPERSION = M + "submodels/dispersionModels/dispersionModel/dispersionModel.C"
 # The size distribution (issue 18): core arithmetic, cloud function, post-processing
-PSDCORE = "src/coagulationCore/src/SizeDistribution.cpp"
+PSDCORE = "src/coagulationCore/src/output/SizeDistribution.cpp"
 PSDFUNC = M + "cloudFunctions/sizeDistribution/sizeDistribution.C"
 PSDPOST = "src/python/coagulationPost/psd.py"
 # The Eulerian coagulation-diffusion reference (issue 16)
-EULER2D = "src/coagulationCore/src/CoagulationDiffusionReference.cpp"
+EULER2D = "src/coagulationReferences/src/coagulationDiffusion/CoagulationDiffusionReference.cpp"
 ANALYTIC = "src/python/coagulationPost/analytic.py"
 # The Lagrangian coagulation-diffusion model and its estimators (issue 16 part 2), core only
-LAGRANGE = "src/coagulationCore/src/CoagulationDiffusionLagrangian.cpp"
+LAGRANGE = "src/coagulationReferences/src/coagulationDiffusion/CoagulationDiffusionLagrangian.cpp"
 # The randomized spectral model of pseudo-turbulence (issue 17), core only
-PSEUDO = "src/coagulationCore/src/PseudoTurbulence.cpp"
+PSEUDO = "src/coagulationReferences/src/pseudoTurbulence/PseudoTurbulence.cpp"
 # The Lagrangian trajectory methods (issue 17 part 2), core only
-TRAJ = "src/coagulationCore/src/Trajectory.cpp"
-TABLE = "src/coagulationCore/src/HomogeneousTable.cpp"
-LAGR = "src/coagulationCore/src/LagrangianCoagulation.cpp"
-LAGRH = "src/coagulationCore/include/coagulation/LagrangianCoagulation.hpp"
+TRAJ = "src/coagulationReferences/src/pseudoTurbulence/Trajectory.cpp"
+TABLE = "src/coagulationReferences/src/smoluchowski/HomogeneousTable.cpp"
+LAGR = "src/coagulationReferences/src/lagrangian/LagrangianCoagulation.cpp"
+LAGRH = "src/coagulationReferences/include/coagulationReferences/lagrangian/LagrangianCoagulation.hpp"
 LAGT = "core.Lagrangian|core.Trajectory"
 # The pair proposals of the event loop (issue 19), core only
-TREE = "src/coagulationCore/include/coagulation/QuantizedSumTree.hpp"
-TREECPP = "src/coagulationCore/src/QuantizedSumTree.cpp"
-BINS = "src/coagulationCore/include/coagulation/OctaveBins.hpp"
-BINSCPP = "src/coagulationCore/src/OctaveBins.cpp"
-PROPOSE = "src/coagulationCore/include/coagulation/MajorantSampler.hpp"
-LARGE = "src/coagulationCore/src/LargeArray.cpp"
-SAMPLERTESTS = "core.QuantizedSumTree|core.OctaveBins|core.MajorantSampler|core.Stores/MajorantSamplerStore"
+TREE = "src/coagulationCore/include/coagulation/sampling/QuantizedSumTree.hpp"
+TREECPP = "src/coagulationCore/src/sampling/QuantizedSumTree.cpp"
+PROPOSE = "src/coagulationCore/include/coagulation/sampling/MajorantSampler.hpp"
+LARGE = "src/coagulationCore/src/population/LargeArray.cpp"
+SAMPLERTESTS = "core.QuantizedSumTree|core.MajorantSampler"
 
 # Every targeted run includes the fault and bad-input cases
 ALWAYS = "case_faults|case_badInput"
@@ -111,15 +109,15 @@ BUGS = {
             "case_transport|case_inflow|case_streams",
             "mass balance: number-control change subtracted"),
     "B06": (SEEDS,
-            "    s = mix64(s ^ uint64_t(time_.timeIndex()));\n", "",
+            "    s = coag::mix64(s ^ uint64_t(time_.timeIndex()));\n", "",
             "case_streams|case_restart|case_transport",
             "streamSeed: time index dropped"),
     "B07": (SEEDS,
-            "    s = mix64(s ^ uint64_t(Pstream::myProcNo()));\n", "",
+            "    s = coag::mix64(s ^ uint64_t(Pstream::myProcNo()));\n", "",
             "case_streams|case_restart|case_transport",
             "streamSeed: processor dropped"),
     "B08": (SEEDS,
-            "    s = mix64(s ^ uint64_t(index));\n", "",
+            "    s = coag::mix64(s ^ uint64_t(index));\n", "",
             "case_streams|case_restart|case_transport",
             "streamSeed: cell/face index dropped"),
     "B09": (INFLOW,
@@ -223,7 +221,7 @@ BUGS = {
             "        d.d43 = s3 / s2;\n",
             "core.SizeSample",
             "derived sizes: d43 computed as d32"),
-    "B30": (PSDCORE,
+    "B30": ("src/coagulationCore/src/statistics/CorrelatedMean.cpp",
             "        std::max(2.0 * tau, 1e-3) * g0 / std::max(Nf - 2.0 * double(M) - 1, 1.0);\n",
             "        1.0 * g0 / std::max(Nf - 2.0 * double(M) - 1, 1.0);\n",
             "core.CorrelatedMean|case_psdDuct",
@@ -482,31 +480,11 @@ BUGS = {
             SAMPLERTESTS,
             "tree pair walk (prefetching, > 512 kB): the second factor walks the first's column"),
     "B92": (PROPOSE,
-            "                const std::uint64_t u2 = rng.uniformIndex(tree_.totalInteger(second.tree));\n",
-            "                const std::uint64_t u2 = rng.uniformIndex(tree_.totalInteger(first.tree));\n",
+            "            const std::uint64_t u2 = rng.uniformIndex(tree_.totalInteger(second.tree));\n",
+            "            const std::uint64_t u2 = rng.uniformIndex(tree_.totalInteger(first.tree));\n",
             SAMPLERTESTS,
             "pair proposal: the second factor's uniform scaled by the first factor's total"),
-    "B93": (BINS,
-            "            if (low + cell <= v) return true;\n",
-            "            return true;\n",
-            SAMPLERTESTS,
-            "octave bins: no acceptance v / top (members of a bin drawn uniformly)"),
-    "B94": (BINS,
-            "        const std::uint64_t b = static_cast<std::uint64_t>(k + 1) << 51;\n",
-            "        const std::uint64_t b = static_cast<std::uint64_t>(k) << 51;\n",
-            SAMPLERTESTS,
-            "octave bins: the bin's top taken as its bottom (acceptance saturates at 1)"),
-    "B95": (BINS,
-            "        C.sum[kNew] += significand(v);\n",
-            "        C.sum[kNew] += significand(r.value);\n",
-            SAMPLERTESTS,
-            "octave bins: a change adds the old value's significand to the bin sum"),
-    "B96": (BINSCPP,
-            "        refresh(C, k);\n        if (r != last) {\n",
-            "        if (r != last) {\n",
-            SAMPLERTESTS,
-            "octave bins: a removal leaves its bin's total stale"),
-    "B105": ("src/coagulationCore/include/coagulation/Rng.hpp",
+    "B105": ("src/coagulationCore/include/coagulation/random/Rng.hpp",
              "        s_[3] = rotl(s_[3], 45);\n",
              "        s_[3] = rotl(s_[3], 44);\n",
              "core.Rng",
@@ -523,12 +501,12 @@ BUGS = {
              "    return np.lexsort((centres[:, 2], centres[:, 1], centres[:, 0]))\n",
              "python_unit",
              "report: rows sorted on the raw centres (a decomposed run's rows in another order)"),
-    "B125": ("src/coagulationCore/src/CostFit.cpp",
+    "B125": ("src/coagulationCore/src/decomposition/CostFit.cpp",
              "    if (llt.info() != Eigen::Success || !(pivots.array() >= minPivot).all()) return r;\n",
              "    if (llt.info() != Eigen::Success) return r;\n",
              "core.CostFit",
              "cost fit: no pivot check, so collinear cells give a 'determined' fit of NaN and inf"),
-    "B126": ("src/coagulationCore/src/CostFit.cpp",
+    "B126": ("src/coagulationCore/src/decomposition/CostFit.cpp",
              "        std::max(sumSquares_ - coef.dot(b), 0.0) / static_cast<double>(n_ - nTerms);\n",
              "        std::max(sumSquares_ - coef.dot(b), 0.0);\n",
              "core.CostFit",
@@ -558,27 +536,27 @@ BUGS = {
              "",
              SAMPLERTESTS,
              "quantised tree: the build takes the scale without the last partial block's values (and lets their NaNs through)"),
-    "B137": ("src/coagulationCore/src/CostFit.cpp",
+    "B137": ("src/coagulationCore/src/decomposition/CostFit.cpp",
              "    if (!(p > minParticleShare * moveSeconds) || !std::isfinite(p)) return q;\n",
              "    if (!(p > 0.0) || !std::isfinite(p)) return q;\n",
              "core.CostFit",
              "cellWork's ratios: a particle fitted at a twentieth of a move still gives an eventCost"),
-    "B138": ("src/coagulationCore/src/CostFit.cpp",
+    "B138": ("src/coagulationCore/src/decomposition/CostFit.cpp",
              "    const double eVar = (r.cov[0][0] - 2.0 * e * r.cov[0][1] + e * e * r.cov[1][1]) / (p * p);\n",
              "    const double eVar = (r.cov[0][0] + 2.0 * e * r.cov[0][1] + e * e * r.cov[1][1]) / (p * p);\n",
              "core.CostFit",
              "cellWork's ratios: the eventCost's error with the covariance term's sign turned"),
-    "B139": ("src/coagulationCore/src/Rng.cpp",
+    "B139": ("src/coagulationCore/src/random/Rng.cpp",
              "        if (i == 0) return Ziggurat::r - std::log(uniform());\n",
              "        if (i == 0) return -std::log(uniform());\n",
              "core.Rng",
              "ziggurat exponential: the tail drawn from 0 instead of beyond r"),
-    "B140": ("src/coagulationCore/src/Rng.cpp",
+    "B140": ("src/coagulationCore/src/random/Rng.cpp",
              "        if (z.f[i] + uniform() * (z.f[i - 1] - z.f[i]) < std::exp(-x)) return x;\n",
              "        if (z.f[i] + uniform() * (z.f[i - 1] - z.f[i]) < std::exp(x)) return x;\n",
              "core.Rng",
              "ziggurat exponential: the wedge compared with exp(x), so every wedge point is taken"),
-    "B141": ("src/coagulationCore/src/Rng.cpp",
+    "B141": ("src/coagulationCore/src/random/Rng.cpp",
              "        z.k[i + 1] = static_cast<std::uint64_t>((de / te) * m);\n",
              "        z.k[i] = static_cast<std::uint64_t>((de / te) * m);\n",
              "core.Rng",
@@ -608,12 +586,12 @@ BUGS = {
              "",
              "core.QuantizedSumTree",
              "build in fewer passes: a NaN or infinite value staged as if good (no scan, no error)"),
-    "B147": ("src/coagulationCore/src/MajorantSampler.cpp",
+    "B147": ("src/coagulationCore/src/sampling/MajorantSampler.cpp",
              "    if (static_cast<std::size_t>(nb) > maxBasis || terms.size() > maxTerms) {\n",
              "    if (static_cast<std::size_t>(nb) > maxBasis + 1 || terms.size() > maxTerms) {\n",
              "core.MajorantSampler",
              "sampler's fixed arrays: a kernel with one basis function too many taken (writes past phi_)"),
-    "B148": ("src/coagulationCore/src/MajorantSampler.cpp",
+    "B148": ("src/coagulationCore/src/sampling/MajorantSampler.cpp",
              "        if (nTreeColumns_ == QuantizedSumTree::maxColumns) {\n",
              "        if (nTreeColumns_ == QuantizedSumTree::maxColumns + 2) {\n",
              "core.MajorantSampler",
@@ -623,7 +601,7 @@ BUGS = {
              "        std::uint64_t r = bits - twoTo52Bits + std::uint64_t(big - twoTo52 < v);  // the ceiling\n",
              "core.QuantizedSumTree",
              "quantised tree: the ceiling's test against the unscaled value v instead of the quotient t"),
-    "B150": ("src/coagulationCore/src/JumpProcess.hpp",
+    "B150": ("src/coagulationCore/src/algorithms/JumpProcess.hpp",
              "        return static_cast<bool>(int(uAccept * proposed < target) | int(target >= proposed));\n",
              "        return static_cast<bool>(int(uAccept * target < proposed) | int(target >= proposed));\n",
              "core.Algorithms/(CellAlgorithmTest|ReferenceKernelTest)",
@@ -683,7 +661,7 @@ BUGS = {
              "        const bool ahead = Ahead && ahead_.valid;\n",
              SAMPLERTESTS + "|core.SwaLookahead",
              "draws made ahead: taken for a proposal of another majorant term"),
-    "B136": ("src/coagulationCore/src/JumpProcess.hpp",
+    "B136": ("src/coagulationCore/src/algorithms/JumpProcess.hpp",
              "            sampler_.proposeAhead((u - inceptionRate) / scale, n, rng, P.data(), j1, j2);\n",
              "            sampler_.proposeAhead(u / scale, n, rng, P.data(), j1, j2);\n",
              SAMPLERTESTS + "|core.SwaLookahead",
@@ -699,7 +677,7 @@ BUGS = {
              SAMPLERTESTS,
              "quantised tree: coarsening rounds the leaves down (small values lost, Q below v)"),
     "B113": (PROPOSE,
-             "        return binned_ ? value : tree_.quantised(col.tree, value);\n",
+             "        return tree_.quantised(col.tree, value);\n",
              "        return value;\n",
              SAMPLERTESTS,
              "pair rate from the raw values, not the tree's quantised ones (acceptance too high for small values)"),
@@ -718,12 +696,12 @@ BUGS = {
              "                    and abs(m - a) <= sigma * c:\n",
              "python_unit",
              "--check-sigma: the 95 % half-width taken as the standard error"),
-    "B108": ("src/coagulationCore/src/WorkPartition.cpp",
+    "B108": ("src/coagulationCore/src/decomposition/WorkPartition.cpp",
              "        if (open && partsLeft > 1 && (sum + w[i] > hi || itemsLeft == partsLeft - 1)) {\n",
              "        if (open && partsLeft > 1 && sum + w[i] > hi) {\n",
              "core.WorkPartition|case_parallel",
              "linear partition: parts may be left empty (no early close when the items only just fill the parts left)"),
-    "B109": ("src/coagulationCore/src/WorkPartition.cpp",
+    "B109": ("src/coagulationCore/src/decomposition/WorkPartition.cpp",
              "            if (partsNeeded(w, mid) <= k) hi = mid;\n",
              "            if (partsNeeded(w, mid) < k) hi = mid;\n",
              "core.WorkPartition|case_parallel",
@@ -733,12 +711,12 @@ BUGS = {
              "    const int e = exponentFor(v);\n",
              SAMPLERTESTS,
              "quantised tree: a change to a NaN, infinite or negative value is taken (garbage integer leaf)"),
-    "B116": ("src/coagulationCore/src/WorkPartition.cpp",
+    "B116": ("src/coagulationCore/src/decomposition/WorkPartition.cpp",
              "                    if (load[q] < load[p]) p = q;\n",
              "                    if (load[q] > load[p]) p = q;\n",
              "core.WorkPartition|case_parallel",
              "dealt runs: each run to the most loaded part, not the least"),
-    "B117": ("src/coagulationCore/src/WorkPartition.cpp",
+    "B117": ("src/coagulationCore/src/decomposition/WorkPartition.cpp",
              "        if (best.empty() || largest < bestLargest) {\n",
              "        if (best.empty() || m > 1) {\n",
              "core.WorkPartition|case_parallel",

@@ -3,28 +3,31 @@
 #ifndef COAGULATION_COAGULATION_HPP
 #define COAGULATION_COAGULATION_HPP
 
-//- Umbrella header of the coagulationCore library (namespace coag). The public headers
-//  compile as C++14 as well, and none includes HDF5. The Eigen-based deterministic references
-//  (SmoluchowskiReference.hpp) are left out so that users need no Eigen include path;
-//  include that header directly where needed.
-#include "coagulation/CellAlgorithm.hpp"
-#include "coagulation/CellPopulation.hpp"
-#include "coagulation/CoagulationKernel.hpp"
-#include "coagulation/Dispersion.hpp"
-#include "coagulation/ExactSolutions.hpp"
-#include "coagulation/Inception.hpp"
-#include "coagulation/LargeArray.hpp"
-#include "coagulation/MomentSeriesFile.hpp"
-#include "coagulation/Moments.hpp"
-#include "coagulation/NanbuMethod.hpp"
-#include "coagulation/NumberControl.hpp"
-#include "coagulation/Particle.hpp"
-#include "coagulation/ParticleType.hpp"
-#include "coagulation/PseudoTurbulence.hpp"
-#include "coagulation/Rng.hpp"
-#include "coagulation/QuantizedSumTree.hpp"
-#include "coagulation/SizeDistribution.hpp"
-#include "coagulation/WorkPartition.hpp"
-#include "coagulation/CostFit.hpp"
+//- Umbrella header of the coagulationCore library (namespace coag), one folder per concept.
+//  The public headers compile as C++14 as well, and none includes HDF5 or Eigen. The
+//  references the tests check against are a library of their own (coagulationReferences/).
+#include "coagulation/random/Rng.hpp"
+#include "coagulation/random/SplitMix64.hpp"
+#include "coagulation/random/CounterStream.hpp"
+#include "coagulation/random/Normal.hpp"
+#include "coagulation/population/ParticleType.hpp"
+#include "coagulation/population/Particle.hpp"
+#include "coagulation/population/CellPopulation.hpp"
+#include "coagulation/population/Inception.hpp"
+#include "coagulation/population/LargeArray.hpp"
+#include "coagulation/kernels/CoagulationKernel.hpp"
+#include "coagulation/sampling/QuantizedSumTree.hpp"
+#include "coagulation/sampling/MajorantSampler.hpp"
+#include "coagulation/algorithms/CellAlgorithm.hpp"
+#include "coagulation/algorithms/NumberControl.hpp"
+#include "coagulation/algorithms/StepStatistics.hpp"
+#include "coagulation/transport/Dispersion.hpp"
+#include "coagulation/output/MomentSeriesFile.hpp"
+#include "coagulation/output/SizeDistribution.hpp"
+#include "coagulation/statistics/Moments.hpp"
+#include "coagulation/statistics/RunningStatistics.hpp"
+#include "coagulation/statistics/CorrelatedMean.hpp"
+#include "coagulation/decomposition/WorkPartition.hpp"
+#include "coagulation/decomposition/CostFit.hpp"
 
 #endif

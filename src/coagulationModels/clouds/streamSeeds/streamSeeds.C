@@ -7,23 +7,7 @@
 
 #include "streamSeeds.H"
 #include "Pstream.H"
-
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
-
-namespace
-{
-
-//- SplitMix64 finaliser: decorrelates the seeds of neighbouring streams
-inline uint64_t mix64(uint64_t z)
-{
-    z += 0x9e3779b97f4a7c15ULL;
-    z = (z ^ (z >> 30))*0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27))*0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-}
-
-} // End anonymous namespace
-
+#include "coagulation/random/SplitMix64.hpp"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -51,11 +35,11 @@ uint64_t Foam::streamSeeds::operator()
     const purpose p
 ) const
 {
-    uint64_t s = mix64(seed_);
-    s = mix64(s ^ uint64_t(Pstream::myProcNo()));
-    s = mix64(s ^ uint64_t(index));
-    s = mix64(s ^ uint64_t(time_.timeIndex()));
-    s = mix64(s ^ uint64_t(p));
+    uint64_t s = coag::mix64(seed_);
+    s = coag::mix64(s ^ uint64_t(Pstream::myProcNo()));
+    s = coag::mix64(s ^ uint64_t(index));
+    s = coag::mix64(s ^ uint64_t(time_.timeIndex()));
+    s = coag::mix64(s ^ uint64_t(p));
     return s;
 }
 

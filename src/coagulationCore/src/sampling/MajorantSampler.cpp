@@ -1,0 +1,82 @@
+// coagulationFoam core. Copyright (C) 2025-2026 the coagulationFoam authors
+// SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
+#include "coagulation/sampling/MajorantSampler.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace coag {
+
+std::size_t MajorantSampler::columnFor(int b, bool weighted, const std::string& who)
+{
+    for (std::size_t i = 0; i < nColumns_; ++i) {
+        if (columns_[i].basis == b && columns_[i].weighted == weighted) return i;
+    }
+    Column col;
+    col.basis = b;
+    col.weighted = weighted;
+    col.uniform = !weighted && kernel_->constantBasis(b);
+    col.constant = phi_[static_cast<std::size_t>(b)];
+    if (col.uniform && !(col.constant > 0.0 && std::isfinite(col.constant))) {
+        throw std::invalid_argument(who + ": kernel '" + kernel_->name()
+                                    + "' declares a constant basis function that is not "
+                                      "positive");
+    }
+    if (!col.uniform) {
+        if (nTreeColumns_ == QuantizedSumTree::maxColumns) {
+            throw std::invalid_argument(who + ": kernel '" + kernel_->name()
+                                        + "' needs more than "
+                                        + std::to_string(QuantizedSumTree::maxColumns)
+                                        + " sampler columns");
+        }
+        col.tree = nTreeColumns_++;
+        treeBasis_[col.tree] = static_cast<std::size_t>(b);
+        treeWeighted_[col.tree] = weighted;
+    }
+    columns_[nColumns_] = col;  // at most 2 nBasis <= 2 maxBasis columns
+    return nColumns_++;
+}
+
+void MajorantSampler::configure(const CoagulationKernel& kernel, const std::string& who)
+{
+    kernel_ = &kernel;
+    const int nb = kernel.nBasis();
+    const std::vector<MajorantTerm>& terms = kernel.majorantTerms();
+    if (nb <= 0 || terms.empty()) {
+        throw std::invalid_argument(who + ": kernel '" + kernel.name() + "' has no majorant terms");
+    }
+    if (static_cast<std::size_t>(nb) > maxBasis || terms.size() > maxTerms) {
+        throw std::invalid_argument(who + ": kernel '" + kernel.name() + "' has "
+                                    + std::to_string(nb) + " basis functions and "
+                                    + std::to_string(terms.size())
+                                    + " majorant terms, at most " + std::to_string(maxBasis)
+                                    + " and " + std::to_string(maxTerms));
+    }
+    std::fill_n(phi_, maxBasis, 0.0);
+    std::fill_n(phi2_, maxBasis, 0.0);
+    kernel.basis(ParticleType{}, phi_);
+
+    nColumns_ = 0;
+    nTreeColumns_ = 0;
+    nTerms_ = 0;
+    for (const MajorantTerm& t : terms) {
+        if (t.first < 0 || t.first >= nb || t.second < 0 || t.second >= nb || !(t.coeff > 0.0)
+            || !std::isfinite(t.coeff)) {
+            throw std::invalid_argument(who + ": kernel '" + kernel.name()
+                                        + "' has an invalid majorant term (coeff must be > 0, "
+                                          "basis indices in [0, nBasis))");
+        }
+        termCoeff_[nTerms_] = t.coeff;
+        termFirst_[nTerms_] = columnFor(t.first, false, who);
+        termSecond_[nTerms_] = columnFor(t.second, weightedSecond_, who);
+        ++nTerms_;
+    }
+    std::fill_n(termRate_, maxTerms, 0.0);
+    lastTerm_ = nTerms_ - 1;
+    std::fill_n(leaf_, QuantizedSumTree::maxColumns, 0.0);
+    std::fill_n(columnTotals_, QuantizedSumTree::maxColumns, 0.0);
+}
+
+} // namespace coag
