@@ -16,8 +16,9 @@
 //                             [algorithm (SWA, DSA1 or all)] [kernel (additive, constant or all)]
 //                             [sizes: N,N,... (default 1e3,1e4,1e5,1e6), those up to maxN]
 // COAGULATION_LOOKAHEAD=0 in the environment switches the event loop's draws made ahead off
-// (CellAlgorithm::setLookahead; the same events, so a same-binary comparison of their cost).
+// (DrawsAhead::never; the same events, so a same-binary comparison of their cost).
 #include "coagulation/coagulation.hpp"
+#include "coagulation/algorithms/EventLoop.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -51,9 +52,11 @@ Result runBlock(const std::string& algName, const std::string& kernelName, std::
            double minEvents)
 {
     auto kernel = makeKernel(kernelName, 1.0);
-    auto alg = makeCellAlgorithm(algName, *kernel, InceptionModel{});
     const char* lookahead = std::getenv("COAGULATION_LOOKAHEAD");
-    alg->setLookahead(!(lookahead && std::string(lookahead) == "0"));
+    auto alg = detail::makeCellAlgorithm(algName, *kernel, InceptionModel{}, NumberControl{},
+                                         lookahead && std::string(lookahead) == "0"
+                                             ? DrawsAhead::never
+                                             : DrawsAhead::whereTheyPay);
     const bool dsa = algName != "SWA";
     // physical time per window (K0 = 1, density 1)
     const double window = dsa ? (kernelName == "additive" ? 0.2 : 0.5)

@@ -498,7 +498,7 @@ TEST(SwaNumberControl, BooksTheMassItChanges)
 }
 
 //- SWA's event loop draws each proposal ahead in a sum tree too big for the caches
-//  (CellAlgorithm::setLookahead, on by default): the same particles, bit for bit, and the
+//  (DrawsAhead::whereTheyPay, the default, against DrawsAhead::never): the same particles, bit for bit, and the
 //  same event counts as without, for a population of 2^19 - 37 particles (a 14 MB tree:
 //  the draws made in two halves; its last node of level 1 has fewer than 8 blocks) and of
 //  100 003 (2.7 MB: in one piece) with the additive kernel (a pair walk or a uniform choice
@@ -516,8 +516,9 @@ TEST(SwaLookahead, DrawsMadeAheadChangeNoResult)
             std::vector<CellPopulation> pops;
             std::vector<StepStatistics> stats(2);
             for (const bool ahead : {true, false}) {
-                auto alg = makeCellAlgorithm("SWA", *kernel, inception);
-                alg->setLookahead(ahead);
+                auto alg = detail::makeCellAlgorithm(
+                    "SWA", *kernel, inception, NumberControl{},
+                    ahead ? DrawsAhead::whereTheyPay : DrawsAhead::never);
                 CellPopulation pop = monodisperse(N, static_cast<double>(N));
                 Rng rng(99);
                 for (int step = 0; step < 3; ++step) {

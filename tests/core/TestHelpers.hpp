@@ -3,6 +3,7 @@
 #define COAGULATION_TESTS_TESTHELPERS_HPP
 
 #include "coagulation/coagulation.hpp"
+#include "coagulation/algorithms/EventLoop.hpp"
 #include "coagulationReferences/smoluchowski/ExactSolutions.hpp"
 #include "coagulationReferences/smoluchowski/NanbuMethod.hpp"
 #include "coagulationReferences/smoluchowski/SmoluchowskiReference.hpp"

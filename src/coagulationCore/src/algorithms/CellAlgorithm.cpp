@@ -3,6 +3,7 @@
 // The algorithms by name: SWA (SwaAlgorithm.cpp), DSA1 and DSA2 (DsaAlgorithm.cpp), sharing
 // the jump process of JumpProcess.hpp.
 #include "coagulation/algorithms/CellAlgorithm.hpp"
+#include "coagulation/algorithms/EventLoop.hpp"
 #include "JumpProcess.hpp"
 
 #include <cmath>
@@ -20,6 +21,15 @@ std::unique_ptr<CellAlgorithm> makeCellAlgorithm(const std::string& name,
                                                  const CoagulationKernel& kernel,
                                                  const InceptionModel& inception,
                                                  const NumberControl& control)
+{
+    return detail::makeCellAlgorithm(name, kernel, inception, control, DrawsAhead::whereTheyPay);
+}
+
+std::unique_ptr<CellAlgorithm> detail::makeCellAlgorithm(const std::string& name,
+                                                         const CoagulationKernel& kernel,
+                                                         const InceptionModel& inception,
+                                                         const NumberControl& control,
+                                                         DrawsAhead drawsAhead)
 {
     if (!(inception.rate >= 0.0) || !std::isfinite(inception.rate)) {
         std::ostringstream os;
@@ -46,9 +56,9 @@ std::unique_ptr<CellAlgorithm> makeCellAlgorithm(const std::string& name,
            << control.maxParticles << " and " << control.minParticles;
         throw std::invalid_argument(os.str());
     }
-    if (name == "SWA") return detail::makeSwa(kernel, inception, control);
-    if (name == "DSA1") return detail::makeDsa1(kernel, inception, control);
-    if (name == "DSA2") return detail::makeDsa2(kernel, inception, control);
+    if (name == "SWA") return detail::makeSwa(kernel, inception, control, drawsAhead);
+    if (name == "DSA1") return detail::makeDsa1(kernel, inception, control, drawsAhead);
+    if (name == "DSA2") return detail::makeDsa2(kernel, inception, control, drawsAhead);
     std::ostringstream os;
     os << "coag::makeCellAlgorithm: unknown algorithm '" << name << "'; valid names are:";
     for (const std::string& n : cellAlgorithmNames()) os << ' ' << n;

@@ -50,16 +50,16 @@ struct DsaJump {
 
 std::unique_ptr<CellAlgorithm> makeDsa1(const CoagulationKernel& kernel,
                                         const InceptionModel& inception,
-                                        const NumberControl& control)
+                                        const NumberControl& control, DrawsAhead drawsAhead)
 {
-    return std::make_unique<JumpProcess<DsaJump<HalfRule>>>(kernel, inception, control);
+    return std::make_unique<JumpProcess<DsaJump<HalfRule>>>(kernel, inception, control, drawsAhead);
 }
 
 std::unique_ptr<CellAlgorithm> makeDsa2(const CoagulationKernel& kernel,
                                         const InceptionModel& inception,
-                                        const NumberControl& control)
+                                        const NumberControl& control, DrawsAhead drawsAhead)
 {
-    return std::make_unique<JumpProcess<DsaJump<MassRule>>>(kernel, inception, control);
+    return std::make_unique<JumpProcess<DsaJump<MassRule>>>(kernel, inception, control, drawsAhead);
 }
 
 } // namespace detail

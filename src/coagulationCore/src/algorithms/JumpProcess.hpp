@@ -9,14 +9,15 @@
 //   static constexpr const char* name;      "SWA", "DSA1", "DSA2"
 //   static constexpr bool equalWeights;     DSA: all weights equal (pulled out of the sums,
 //                                           halving halves the volume, closed-cell doubling)
-//   static constexpr bool lookahead;        whether the event loop may draw the next proposal
-//                                           ahead (MajorantSampler::lookAhead): for a jump
-//                                           that changes the sampler by one set() (SWA); a
-//                                           removal by swap (DSA) leaves such draws unusable
+//   static constexpr bool lookahead;        whether the event loop may draw proposals ahead
+//                                           (the modes below): for a jump that changes the
+//                                           sampler by one set() (SWA); a removal by swap
+//                                           (DSA) leaves such draws unusable
 //   void coagulate(pop, j1, j2, rng, sampler)   the accepted jump on the pair (j1, j2),
 //                                           keeping the sampler's leaves in step
 
 #include "coagulation/algorithms/CellAlgorithm.hpp"
+#include "coagulation/algorithms/EventLoop.hpp"
 #include "coagulation/sampling/MajorantSampler.hpp"
 
 #include <algorithm>
@@ -27,13 +28,60 @@
 namespace coag {
 namespace detail {
 
+// The event loop's modes, the policies of JumpProcess::events. A mode that draws ahead
+// makes, during an event, the draws of a later proposal from the engine's words that this
+// proposal will take (EventWords: past this event's acceptance, wordsToProposal more, then
+// the proposal's choice), so that their cache misses overlap the event's work instead of
+// following it; proposeAhead() keeps only what is exact, so every mode gives the same
+// events. Worth it only in a sum tree too big for the caches (pays()).
+
+//- Every proposal walks the tree when it is made
+struct NotAhead {
+    static constexpr bool drawsAhead = false;
+    static constexpr int wordsToProposal = 0;
+    static bool pays(const MajorantSampler&) { return true; }
+    static void finishEarlier(MajorantSampler&, const Particle*) {}
+    static void drawAhead(MajorantSampler&, double, std::size_t, Rng::Engine&, const Particle*) {}
+};
+
+//- The next proposal walks the tree to its blocks during this event
+//  (MajorantSampler::lookAhead); its words follow the next waiting time
+struct AheadInOnePiece {
+    static constexpr bool drawsAhead = true;
+    static constexpr int wordsToProposal = EventWords::waitingTime;
+    static bool pays(const MajorantSampler& s) { return s.lookaheadPays(); }
+    static void finishEarlier(MajorantSampler&, const Particle*) {}
+    static void drawAhead(MajorantSampler& s, double u, std::size_t n, Rng::Engine& peek,
+                          const Particle* P)
+    {
+        s.lookAhead(u, n, peek, P);
+    }
+};
+
+//- The proposal after the next walks down to level 1 during this event
+//  (MajorantSampler::lookTwoAhead) and the next one finishes its walks, begun an event
+//  earlier, to their blocks (finishLookAhead); its words follow the next event and the
+//  waiting time after it
+struct AheadInTwoHalves {
+    static constexpr bool drawsAhead = true;
+    static constexpr int wordsToProposal = EventWords::event + EventWords::waitingTime;
+    static bool pays(const MajorantSampler& s) { return s.twoHalvesPay(); }
+    static void finishEarlier(MajorantSampler& s, const Particle* P) { s.finishLookAhead(P); }
+    static void drawAhead(MajorantSampler& s, double u, std::size_t n, Rng::Engine& peek,
+                          const Particle* P)
+    {
+        s.lookTwoAhead(u, n, peek, P);
+    }
+};
+
 template <class Jump>
 class JumpProcess final : public CellAlgorithm {
 public:
     JumpProcess(const CoagulationKernel& kernel, const InceptionModel& inception,
-                const NumberControl& control)
+                const NumberControl& control, DrawsAhead drawsAhead)
         : CellAlgorithm(kernel), inception_(inception), control_(control),
-          sampler_(!Jump::equalWeights)
+          sampler_(!Jump::equalWeights),
+          drawsAhead_(Jump::lookahead && drawsAhead == DrawsAhead::whereTheyPay)
     {
         sampler_.configure(kernel, "coag::makeCellAlgorithm");
     }
@@ -47,8 +95,6 @@ public:
     const InceptionModel& inception() const override { return inception_; }
 
     std::size_t workspaceBytes() const override { return sampler_.memoryBytes(); }
-
-    void setLookahead(bool on) override { lookahead_ = on; }
 
 private:
     //- DSA's doubling applies in closed cells only (see NumberControl.hpp)
@@ -93,12 +139,9 @@ private:
     [[noreturn]] static void badRate(double totalRate, double remaining,
                                      const CellPopulation& pop);
 
-    //- The events of one step from t = 0 to dt, the sampler built; unless notAhead, each event
-    //  proposes through draws made ahead during the event before it (aheadInOnePiece,
-    //  MajorantSampler::lookAhead) or during the two before it (aheadInTwoHalves,
-    //  MajorantSampler::lookTwoAhead)
-    enum Ahead { notAhead, aheadInOnePiece, aheadInTwoHalves };
-    template<Ahead ahead>
+    //- The events of one step from t = 0 to dt, the sampler built, in the given mode
+    //  (NotAhead, AheadInOnePiece, AheadInTwoHalves)
+    template <class Mode>
     void events(CellPopulation& pop, const CoagulationKernel& kernel, double inceptionRate,
                 double w, double dt, Rng& rng, StepStatistics& stats);
 
@@ -111,7 +154,7 @@ private:
     InceptionModel inception_;
     NumberControl control_;
     MajorantSampler sampler_;
-    bool lookahead_ = true;
+    bool drawsAhead_;
 };
 
 template <class Jump>
@@ -242,17 +285,17 @@ void JumpProcess<Jump>::advance(CellPopulation& pop, const CoagulationKernel& ke
     P.reserve(capacity);
     sampler_.build(P, capacity);
 
-    if (Jump::lookahead && lookahead_ && sampler_.twoHalvesPay()) {
-        events<aheadInTwoHalves>(pop, kernel, inceptionRate, w, dt, rng, stats);
-    } else if (Jump::lookahead && lookahead_ && sampler_.lookaheadPays()) {
-        events<aheadInOnePiece>(pop, kernel, inceptionRate, w, dt, rng, stats);
+    if (drawsAhead_ && AheadInTwoHalves::pays(sampler_)) {
+        events<AheadInTwoHalves>(pop, kernel, inceptionRate, w, dt, rng, stats);
+    } else if (drawsAhead_ && AheadInOnePiece::pays(sampler_)) {
+        events<AheadInOnePiece>(pop, kernel, inceptionRate, w, dt, rng, stats);
     } else {
-        events<notAhead>(pop, kernel, inceptionRate, w, dt, rng, stats);
+        events<NotAhead>(pop, kernel, inceptionRate, w, dt, rng, stats);
     }
 }
 
 template <class Jump>
-template <typename JumpProcess<Jump>::Ahead ahead>
+template <class Mode>
 void JumpProcess<Jump>::events(CellPopulation& pop, const CoagulationKernel& kernel,
                                double inceptionRate, double w, double dt, Rng& rng,
                                StepStatistics& stats)
@@ -293,39 +336,22 @@ void JumpProcess<Jump>::events(CellPopulation& pop, const CoagulationKernel& ker
         //      (j1 == j2 and rejections are fictitious jumps)
         std::size_t j1 = 0;
         std::size_t j2 = 0;
-        if (ahead != notAhead) {
+        if (Mode::drawsAhead) {
             sampler_.proposeAhead((u - inceptionRate) / scale, n, rng, P.data(), j1, j2);
+            // A later proposal from the engine's words past this pair's acceptance and
+            // this event's rates (the mode's wordsToProposal, EventWords)
+            Mode::finishEarlier(sampler_, P.data());
+            Rng::Engine peek = rng.engine();
+            if (j1 != j2 && j1 < n && j2 < n) {
+                for (int word = 0; word < EventWords::acceptance; ++word) peek();
+            }
+            for (int word = 0; word < Mode::wordsToProposal; ++word) peek();
+            const double uNext = Rng::toUniform(peek()) * totalRate;  // its choice
+            if (uNext >= inceptionRate) {
+                Mode::drawAhead(sampler_, (uNext - inceptionRate) / scale, n, peek, P.data());
+            }
         } else {
             sampler_.propose((u - inceptionRate) / scale, n, rng, P.data(), j1, j2);
-        }
-        if (ahead == aheadInOnePiece) {
-            // The next proposal, from the engine's next words (past this pair's acceptance: a
-            // waiting time, a uniform, the walks' integers) and this event's rates, walks the
-            // tree now: its cache misses overlap this event's acceptance and change.
-            // proposeAhead() keeps only what is exact.
-            Rng::Engine peek = rng.engine();
-            if (j1 != j2 && j1 < n && j2 < n) peek();  // the acceptance's uniform
-            peek();
-            const double uNext = Rng::toUniform(peek()) * totalRate;
-            if (uNext >= inceptionRate) {
-                sampler_.lookAhead((uNext - inceptionRate) / scale, n, peek, P.data());
-            }
-        } else if (ahead == aheadInTwoHalves) {
-            // The proposal after the next one walks the tree down to level 1 now, and the
-            // next one finishes its walks (made during the event before) to their blocks:
-            // each half's cache misses overlap an event's work instead of following it.
-            // Their words are the engine's next (past this pair's acceptance: the next
-            // event's waiting time, uniform, two integers and acceptance, then a waiting time
-            // and a uniform, the walks' integers), their rates this event's; proposeAhead()
-            // keeps only what is exact.
-            sampler_.finishLookAhead(P.data());
-            Rng::Engine peek = rng.engine();
-            if (j1 != j2 && j1 < n && j2 < n) peek();  // the acceptance's uniform
-            for (int word = 0; word < 6; ++word) peek();
-            const double uNext = Rng::toUniform(peek()) * totalRate;
-            if (uNext >= inceptionRate) {
-                sampler_.lookTwoAhead((uNext - inceptionRate) / scale, n, peek, P.data());
-            }
         }
         const bool real =
             j1 != j2 && j1 < n && j2 < n && accepted(j1, P[j1], j2, P[j2], kernel, rng);
@@ -343,11 +369,11 @@ void JumpProcess<Jump>::events(CellPopulation& pop, const CoagulationKernel& ker
 
 //- The factories of the algorithms (SwaAlgorithm.cpp, DsaAlgorithm.cpp)
 std::unique_ptr<CellAlgorithm> makeSwa(const CoagulationKernel&, const InceptionModel&,
-                                       const NumberControl&);
+                                       const NumberControl&, DrawsAhead);
 std::unique_ptr<CellAlgorithm> makeDsa1(const CoagulationKernel&, const InceptionModel&,
-                                        const NumberControl&);
+                                        const NumberControl&, DrawsAhead);
 std::unique_ptr<CellAlgorithm> makeDsa2(const CoagulationKernel&, const InceptionModel&,
-                                        const NumberControl&);
+                                        const NumberControl&, DrawsAhead);
 
 } // namespace detail
 } // namespace coag

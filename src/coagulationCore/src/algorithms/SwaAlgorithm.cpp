@@ -32,9 +32,9 @@ struct SwaJump {
 
 std::unique_ptr<CellAlgorithm> makeSwa(const CoagulationKernel& kernel,
                                        const InceptionModel& inception,
-                                       const NumberControl& control)
+                                       const NumberControl& control, DrawsAhead drawsAhead)
 {
-    return std::make_unique<JumpProcess<SwaJump>>(kernel, inception, control);
+    return std::make_unique<JumpProcess<SwaJump>>(kernel, inception, control, drawsAhead);
 }
 
 } // namespace detail

@@ -95,12 +95,6 @@ public:
     //- Bytes of reusable work memory (the sum tree) currently held; for diagnostics.
     virtual std::size_t workspaceBytes() const { return 0; }
 
-    //- Whether the event loop may draw each proposal ahead, during the event before it, where
-    //  that pays (SWA in a sum tree too big for the caches: MajorantSampler::lookAhead).
-    //  On by default; the results are the same bit for bit either way (tested), so the
-    //  switch is for tests and same-binary benchmarks. An algorithm without it ignores it.
-    virtual void setLookahead(bool) {}
-
 private:
     const CoagulationKernel& kernel_;
 };
