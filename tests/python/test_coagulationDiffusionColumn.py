@@ -40,13 +40,14 @@ def test_central_cells_of_a_coarse_mesh():
 
 
 def test_size_density_rounds_the_mass_and_sums_the_weights():
-    inside = np.array([True, True, False, True])
-    mass = np.array([1.0, 1.2, 1.0, 2.0])
-    weight = np.array([2.0, 3.0, 5.0, 7.0])
+    # the masses are sums of unit monomers, up to round-off: 1.2 is 1, 1.9999999999 is 2
+    inside = np.array([True, True, False, True, True])
+    mass = np.array([1.0, 1.2, 1.0, 2.0, 1.9999999999])
+    weight = np.array([2.0, 3.0, 5.0, 7.0, 1.0])
     n, se = col.size_density(inside, mass, weight, 1, 2.0)
     assert n == pytest.approx(2.5)
     assert se == pytest.approx(math.sqrt(13) / 2)
-    assert col.size_density(inside, mass, weight, 2, 2.0) == pytest.approx((3.5, 3.5))
+    assert col.size_density(inside, mass, weight, 2, 2.0) == pytest.approx((4.0, math.sqrt(50) / 2))
 
 
 def test_z_score():
