@@ -10,14 +10,13 @@ set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 . "$here/../../etc/functions"
 out="${1:-/tmp/coagulationDiffusionColumn}"; n="${2:-150}"; sizes="${3:-10}"
-py="$COAGULATIONFOAM_DIR/tests/benchmarks/coagulationDiffusionColumn.py"
 rm -rf "$out"; mkdir -p "$out"
 "$COAGULATIONFOAM_BUILD/tests/benchmarks/eulerianReference" --W 4 --gamma 1.05 --Lambda 500 \
     > "$out/eulerian.csv" 2> "$out/eulerian.log"
 cp -r "$COAGULATIONFOAM_DIR/tutorials/constantKernelDuct" "$out/case"
 cd "$out/case"
 cleanCase
-"$COAGULATIONFOAM_PYTHON" "$py" setup . "$n"
+"$COAGULATIONFOAM_PYTHON" -m coagulationPost.coagulationDiffusionColumn setup . "$n"
 runApplication blockMesh
 runApplication topoSet
 foamDictionary -entry functions -remove system/controlDict > /dev/null
@@ -27,5 +26,5 @@ done
 start=$(date +%s)
 runApplication coagulationFoam
 echo "coagulationFoam: $(( $(date +%s) - start )) s; $(grep 'eulerianReference:' "$out/eulerian.log")"
-"$COAGULATIONFOAM_PYTHON" "$py" compare . "$out/eulerian.csv" 80 1,5,10 "$sizes" 0.3 \
+"$COAGULATIONFOAM_PYTHON" -m coagulationPost.coagulationDiffusionColumn compare . "$out/eulerian.csv" 80 1,5,10 "$sizes" 0.3 \
     | tee "$out/column.csv"

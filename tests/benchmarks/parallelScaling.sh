@@ -157,10 +157,8 @@ done
 if [ "${SAMPLE:-0}" = 1 ]; then
     echo "per-cell time averages against the 1x1 run of the same round (largest |z| per moment):"
     "$COAGULATIONFOAM_PYTHON" - "$out" "$rounds" ${CONFIGS:-1x1 2x1work 1x2 2x1simple 2x1cloudMove} <<'PY' | tee "$out/statistics.txt"
-import os
 import sys
 import numpy as np
-sys.path.insert(0, os.path.join(os.environ["COAGULATIONFOAM_DIR"], "src", "python"))
 from coagulationPost import report
 out, rounds, configs = sys.argv[1], int(sys.argv[2]), sys.argv[3:]
 def load(c, r):

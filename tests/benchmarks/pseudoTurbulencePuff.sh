@@ -10,7 +10,6 @@ set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 . "$here/../../etc/functions"
 out="${1:-/tmp/pseudoTurbulencePuff}"; n="${2:-16}"; seed="${3:-1}"; T="${4:-2}"
-py="$COAGULATIONFOAM_DIR/tests/benchmarks/pseudoTurbulencePuff.py"
 rm -rf "$out"; mkdir -p "$out"
 nx="${PUFF_NX:-48}"
 "$COAGULATIONFOAM_BUILD/tests/benchmarks/pseudoTurbulencePuff" --seed "$seed" --T "$T" \
@@ -18,7 +17,7 @@ nx="${PUFF_NX:-48}"
 cp -r "$COAGULATIONFOAM_DIR/tutorials/constantKernelDuct" "$out/case"
 cd "$out/case"
 cleanCase
-"$COAGULATIONFOAM_PYTHON" "$py" setup . "$n" "$seed"
+"$COAGULATIONFOAM_PYTHON" -m coagulationPost.pseudoTurbulencePuff setup . "$n" "$seed"
 runApplication blockMesh
 runApplication topoSet
 runApplication pseudoTurbulenceField
@@ -30,4 +29,4 @@ start=$(date +%s)
 runApplication coagulationFoam
 echo "coagulationFoam: $(( $(date +%s) - start )) s; $(cat "$out/lagrangian.log")"
 grep -A4 "Kolmogorov pseudo" log.pseudoTurbulenceField
-"$COAGULATIONFOAM_PYTHON" "$py" compare . "$out/lagrangian.csv" "$T" | tee "$out/puff.csv"
+"$COAGULATIONFOAM_PYTHON" -m coagulationPost.pseudoTurbulencePuff compare . "$out/lagrangian.csv" "$T" | tee "$out/puff.csv"

@@ -92,4 +92,4 @@ reference()
 }
 reference D "$([ "$quick" = quick ] && echo 2 || echo 12)" 4096 1000 --K0 1e-30
 reference F "$([ "$quick" = quick ] && echo 2 || echo 16)" 1024 2000
-"$COAGULATIONFOAM_PYTHON" "$here/splittingStudy.py" "$out"
+"$COAGULATIONFOAM_PYTHON" -m coagulationPost.splittingStudy "$out"

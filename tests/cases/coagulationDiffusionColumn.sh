@@ -9,7 +9,6 @@
 # against n^E reaches 4, or if n^L is nowhere off by more than 5 standard errors at t' = 5
 # (the effective source).
 . "$(dirname "$0")/caseLib.sh"
-py="$COAGULATIONFOAM_DIR/tests/benchmarks/coagulationDiffusionColumn.py"
 c="$workDir/column"
 rm -rf "$c"; mkdir -p "$workDir"
 "$COAGULATIONFOAM_BUILD/tests/benchmarks/eulerianReference" --W 4 --dx 0.1 --dt 0.025 \
@@ -18,7 +17,7 @@ cat "$workDir/eulerian.log"
 cp -r "$COAGULATIONFOAM_DIR/tutorials/constantKernelDuct" "$c"
 cd "$c"
 cleanCase
-"$COAGULATIONFOAM_PYTHON" "$py" setup . 200 40
+"$COAGULATIONFOAM_PYTHON" -m coagulationPost.coagulationDiffusionColumn setup . 200 40
 setEntry . constant/coagulationProperties sampling/sampleInterval 0.05
 runApplication blockMesh
 runApplication topoSet
@@ -28,5 +27,5 @@ for kv in "deltaT 0.05" "endTime 5" "writeInterval 1" "writeFormat ascii"; do
 done
 runApplication coagulationFoam
 checkBalance log.coagulationFoam
-"$COAGULATIONFOAM_PYTHON" "$py" compare . "$workDir/eulerian.csv" 40 1,5 5 0.4 \
+"$COAGULATIONFOAM_PYTHON" -m coagulationPost.coagulationDiffusionColumn compare . "$workDir/eulerian.csv" 40 1,5 5 0.4 \
     || fail "coagulationFoam off n^E, or not off n^L (see the table above)"

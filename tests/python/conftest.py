@@ -1,9 +1,18 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-"""pytest set-up of the coagulationPost unit tests: the package from <repo>/src/python.
+"""pytest set-up of the coagulationPost unit tests.
 
-Run: /usr/bin/python3 -m pytest -q tests/python   (CTest: python_unit)
+The package comes from PYTHONPATH (etc/bashrc puts <repo>/src/python on it; CTest's
+python_unit sets it) or from an installed copy (pip install src/python):
+
+    PYTHONPATH=src/python /usr/bin/python3 -m pytest -q tests/python   (CTest: python_unit)
 """
-import os
-import sys
+import importlib.util
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)), "..", "..", "src", "python"))
+import pytest
+
+
+def pytest_configure(config):
+    if importlib.util.find_spec("coagulationPost") is None:
+        raise pytest.UsageError(
+            "coagulationPost is not importable: source etc/bashrc, set "
+            "PYTHONPATH=<repo>/src/python, or pip install <repo>/src/python")

@@ -4,6 +4,8 @@
 #   . selfTestLib.sh NAME      then ok/ko "message" ...; finish
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 PY=/usr/bin/python3
+# the package coagulationPost, as etc/bashrc finds it
+export PYTHONPATH="$ROOT/src/python${PYTHONPATH:+:$PYTHONPATH}"
 
 pass=0
 fail=0

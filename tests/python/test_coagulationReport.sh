@@ -18,7 +18,6 @@ HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 # shellcheck source=/dev/null
 . "$HERE/selfTestLib.sh" coagulationReportTest
 REPORT="$ROOT/applications/utilities/coagulationReport/coagulationReport.py"
-PKGDIR="$ROOT/src/python"
 
 # ---------------------------------------------------------------- synthetic data generator
 cat > "$TMP/make_case.py" <<'EOF'
@@ -36,7 +35,6 @@ ap.add_argument("case"); ap.add_argument("layout")
 ap.add_argument("--scale", type=float, default=1.0)
 ap.add_argument("--seed", type=int, default=1)
 ap.add_argument("--kernel", default="constant")
-ap.add_argument("--pkgdir")
 a = ap.parse_args()
 rng = np.random.default_rng(a.seed)
 
@@ -58,7 +56,6 @@ if a.kernel == "constant":
                          I * x**2 / 2 + K0 * I**2 * x**4 / 4 + K0**2 * I**3 * x**6 / 30])
     avg = (P(hi) - P(lo)) / dx                      # (4, nc)
 else:
-    sys.path.insert(0, a.pkgdir)
     from coagulationPost import analytic
     avg = analytic.cell_average("additiveDuct", lo, hi, I, K0)
     avg[1] = I * xc                                 # eq. (50), exact
@@ -97,13 +94,12 @@ else:
     sys.exit("unknown layout " + a.layout)
 EOF
 
-mk() { "$PY" "$TMP/make_case.py" --pkgdir "$PKGDIR" "$@"; }
+mk() { "$PY" "$TMP/make_case.py" "$@"; }
 
 # ---------------------------------------------------------------- coagulationPost.analytic
-if "$PY" - "$PKGDIR" <<'EOF'
+if "$PY" - <<'EOF'
 import sys
 import numpy as np
-sys.path.insert(0, sys.argv[1])
 from coagulationPost import analytic as a
 bad = []
 m = a.additive_duct(np.array([0.099]), 1e5, 1.06e-2)[:, 0]

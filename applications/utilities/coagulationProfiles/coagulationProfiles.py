@@ -12,10 +12,8 @@ particles, physical particles, mass), axialMoments.png, deposition.png.
 """
 import argparse
 import os
-import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "src", "python"))
-from coagulationPost import profiles  # noqa: E402
+from coagulationPost import profiles
 
 
 def main():

@@ -46,11 +46,9 @@ import argparse
 import os
 import sys
 
-# the post-processing package, <repo>/src/python/coagulationPost
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)),
-                                "..", "..", "..", "src", "python"))
-from coagulationPost import analytic, checks, plots, psd, report  # noqa: E402
-from coagulationPost.samples import InputError  # noqa: E402
+# the post-processing package, <repo>/src/python/coagulationPost (PYTHONPATH: etc/bashrc)
+from coagulationPost import analytic, checks, plots, psd, report
+from coagulationPost.samples import InputError
 
 EXIT_OK, EXIT_CHECK_FAILED, EXIT_INPUT = 0, 1, 2
 

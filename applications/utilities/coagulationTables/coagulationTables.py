@@ -64,11 +64,9 @@ import dataclasses
 import os
 import sys
 
-# the post-processing package, <repo>/src/python/coagulationPost
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)),
-                                "..", "..", "..", "src", "python"))
-from coagulationPost import checks, plots, tables  # noqa: E402
-from coagulationPost.samples import InputError  # noqa: E402
+# the post-processing package, <repo>/src/python/coagulationPost (PYTHONPATH: etc/bashrc)
+from coagulationPost import checks, plots, tables
+from coagulationPost.samples import InputError
 
 
 def parse_args(argv):

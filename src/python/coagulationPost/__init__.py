@@ -1,24 +1,86 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-"""coagulationPost: post-processing of coagulationFoam's HDF5 moment samples.
+"""coagulationPost: post-processing of coagulationFoam's HDF5 moment samples and of the
+benchmarks' output.
 
-The command lines applications/utilities/coagulationReport/coagulationReport.py and
-applications/utilities/coagulationTables/coagulationTables.py are thin layers over it.
+The command lines applications/utilities/coagulationReport/coagulationReport.py,
+applications/utilities/coagulationTables/coagulationTables.py and
+applications/utilities/coagulationProfiles/coagulationProfiles.py are thin layers over it;
+the benchmarks' post-processing runs as python3 -m coagulationPost.<module> ARGS (the
+modules marked 'main' below; installed, also as the console scripts coagulationPost-<module>).
+
+Finding it: etc/bashrc puts <repo>/src/python on PYTHONPATH; or pip install src/python
+(src/python/pyproject.toml).
 
 Modules (each imports only what it needs; ``analytic`` and ``statistics`` need numpy and
-scipy, ``samples`` h5py, ``plots`` matplotlib):
+scipy, ``samples`` h5py, ``plots`` and the figures matplotlib).  ``import coagulationPost``
+imports none of them; ``coagulationPost.X`` imports module X on first use:
 
   samples     reading the solver's sample files: processors and restarts merged by cell
               centre and time, realisations of an ensemble, the time window
   statistics  mean, sd, 95 % confidence half-widths; the pooling of groups of samples
-              (Chan et al.'s parallel update, written once); Student t; standard errors
+              (Chan et al.'s parallel update, written once); Student t; standard errors;
+              intervals of correlated time series
   analytic    Patterson & Wagner's duct references: eqs (39)-(45), (47), (50), the moment
               ODEs (38)-(44) and those of the additive kernel, cell averages
+  diffusion   exact solutions of pure diffusion between reflecting or absorbing walls (the
+              random-walk tests)
   report      per-cell statistics of one case or of pooled realisations against the
               analytic reference, and their CSV, JSON and text table (coagulationReport)
   tables      rows of the paper's Tables 1 and 2 pooled over realisations, their CSV and
               markdown (coagulationTables)
-  plots       the PNG figures of both tools (matplotlib, Agg)
-  checks      the acceptance checks of both tools
+  profiles    moments along an axis and deposition per wall of a run on a general mesh
+              (coagulationProfiles)
+  psd         the particle size distribution of a run: its samples, time averages,
+              exact distributions, checks and plots (coagulationReport --psd)
+  plots       the PNG figures of coagulationReport and coagulationTables (matplotlib, Agg)
+  checks      the acceptance checks of coagulationReport and coagulationTables
+  cloud       the coagulationCloud's ASCII particle files of a time folder (cells, fields)
+  lagrangianStudy
+              main: figures and summary of build/tests/benchmarks/lagrangianStudy's CSV
+              (Kolodko-Sabelfeld-Wagner §5, tutorials/pseudoTurbulence*)
+  coagulationDiffusionFigures
+              main: figures and checks of build/tests/benchmarks/coagulationDiffusionFigures'
+              CSV (Sabelfeld-Kolodko Figs 2-10, issue 16, tutorials/coagulationDiffusion*)
+  coagulationDiffusionColumn
+              main: the coagulationFoam case of issue 16 (setup) and its n_l at x = 0
+              against the Eulerian and Lagrangian references (compare)
+  pseudoTurbulencePuff
+              main: the coagulationFoam case of a puff in frozen pseudo-turbulence (setup)
+              against the Lagrangian reference (compare; issue 17)
+  splittingStudy
+              main: tables and plot of tests/benchmarks/splittingStudy.sh's runs (issue 20)
 
-Tests: python3 -m pytest tests/python
+Tests: PYTHONPATH=src/python python3 -m pytest tests/python
 """
+
+import importlib
+
+__all__ = [
+    "samples",
+    "statistics",
+    "analytic",
+    "diffusion",
+    "report",
+    "tables",
+    "profiles",
+    "psd",
+    "plots",
+    "checks",
+    "cloud",
+    "lagrangianStudy",
+    "coagulationDiffusionFigures",
+    "coagulationDiffusionColumn",
+    "pseudoTurbulencePuff",
+    "splittingStudy",
+]
+
+
+def __getattr__(name):
+    """coagulationPost.X: submodule X of __all__, imported on first use (PEP 562)."""
+    if name in __all__:
+        return importlib.import_module("." + name, __name__)
+    raise AttributeError("module %r has no attribute %r" % (__name__, name))
+
+
+def __dir__():
+    return sorted(set(globals()) | set(__all__))

@@ -1,15 +1,17 @@
-#!/usr/bin/env python3
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 """Figures of the Kolodko-Sabelfeld-Wagner §5 studies from lagrangianStudy's CSV files.
 
-    lagrangianStudyPlot.py uniform DIR R'     Figs 1-2: <In>/S and In-bar/S against r'
-                                              (whole range and a zoom), t' = 1.25 and 55
-    lagrangianStudyPlot.py linear DIR R'      Figs 3-6: <Sp(r', t', l)> against l at r' = 0.1 R'
-                                              and R'; Figs 7-8: <Ms(r', t')> against r'
+    python3 -m coagulationPost.lagrangianStudy uniform DIR R'
+                            Figs 1-2: <In>/S and In-bar/S against r' (whole range and a
+                            zoom), t' = 1.25 and 55
+    python3 -m coagulationPost.lagrangianStudy linear DIR R'
+                            Figs 3-6: <Sp(r', t', l)> against l at r' = 0.1 R' and R';
+                            Figs 7-8: <Ms(r', t')> against r'
 
 Stochastic: dashed, with the 95 % interval over the velocity realisations (dotted / band);
 <Sp_l> = <In_l>/<In>, <Ms> = <mass>/<In> (the functionals of the expectation (4.5));
-deterministic (mean velocity, (5.3)): solid. Writes fig*.png into DIR.
+deterministic (mean velocity, (5.3)): solid. Writes fig*.png into DIR, prints a summary.
+The intervals are lagrangianStudy's own (the *_hw columns).
 """
 import csv
 import glob
@@ -17,34 +19,58 @@ import os
 import re
 import sys
 
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+
+def _pyplot():
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    return plt
 
 
 def read(path):
+    """A CSV file of numbers as {column: array}."""
     with open(path) as f:
         rows = list(csv.DictReader(f))
     return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
 
 
-def times(d, prefix):
+def times_of(names, prefix):
+    """The times t of the file names PREFIX<t>[_r...].csv, as strings, sorted by value."""
     ts = []
-    for p in glob.glob(os.path.join(d, prefix + "*.csv")):
-        m = re.match(prefix + r"([0-9.e+-]+?)(_r.*)?\.csv$", os.path.basename(p))
+    for name in names:
+        m = re.match(prefix + r"([0-9.e+-]+?)(_r.*)?\.csv$", name)
         if m:
             ts.append(m.group(1))
     return sorted(set(ts), key=float)
 
 
+def times(d, prefix):
+    """times_of the files PREFIX*.csv in folder d."""
+    return times_of([os.path.basename(p) for p in glob.glob(os.path.join(d, prefix + "*.csv"))],
+                    prefix)
+
+
+def half_radius(r, In, far):
+    """The first r at which In reaches half of far (the clusters' half radius)."""
+    return r[np.argmax(In >= 0.5 * far)]
+
+
+def interval_sizes(l, mean, hw, det):
+    """Sizes whose whole interval [mean - hw, mean + hw] lies below det, and sizes whose
+    interval holds det."""
+    below = [int(s) for s, m, h, dd in zip(l, mean, hw, det) if m + h < dd]
+    within = [int(s) for s, m, h, dd in zip(l, mean, hw, det) if abs(m - dd) <= h]
+    return below, within
+
+
 def uniform(d, R):
+    plt = _pyplot()
     for n, t in enumerate(times(d, "functionals_t"), start=1):
         f = read(os.path.join(d, f"functionals_t{t}.csv"))
         k = int(np.argmin(abs(f["r"] - R)))
-        far = f["In_det"][-1]
-        half = f["r"][np.argmax(f["In"] >= 0.5 * far)]
+        half = half_radius(f["r"], f["In"], f["In_det"][-1])
         ok = f["ratio_realisations"] > 0
         print(f"t' = {t}: In(R')/S = {f['In'][k]:.4g} +- {f['In_hw'][k]:.2g}, deterministic "
               f"{f['In_det'][k]:.4g} (ratio {f['In_det'][k] / f['In'][k]:.3g}); half the clusters "
@@ -69,6 +95,7 @@ def uniform(d, R):
 
 
 def linear(d, R):
+    plt = _pyplot()
     ts = times(d, "functionals_t")
     fig_no = 3
     for rr in (0.1 * R, R):
@@ -77,10 +104,7 @@ def linear(d, R):
             if not os.path.exists(p):
                 continue
             s = read(p)
-            below = [int(l) for l, m, h, dd in zip(s["l"], s["Sp"], s["Sp_hw"], s["Sp_det"])
-                     if m + h < dd]
-            within = [int(l) for l, m, h, dd in zip(s["l"], s["Sp"], s["Sp_hw"], s["Sp_det"])
-                      if abs(m - dd) <= h]
+            below, within = interval_sizes(s["l"], s["Sp"], s["Sp_hw"], s["Sp_det"])
             print(f"t' = {t}, r' = {rr:g}: <Sp_l> + interval below Sp-bar for l = {below}; "
                   f"Sp-bar inside the interval for l = {within}; Sp_5/Sp-bar = "
                   f"{s['Sp'][4] / s['Sp_det'][4]:.3f} +- {s['Sp_hw'][4] / s['Sp_det'][4]:.3f}, "
@@ -129,7 +153,14 @@ def linear(d, R):
         fig_no += 1
 
 
+def main(argv=None):
+    argv = sys.argv[1:] if argv is None else argv
+    if len(argv) != 3 or argv[0] not in ("uniform", "linear"):
+        print(__doc__, file=sys.stderr)
+        return 1
+    (uniform if argv[0] == "uniform" else linear)(argv[1], float(argv[2]))
+    return 0
+
+
 if __name__ == "__main__":
-    if len(sys.argv) != 4 or sys.argv[1] not in ("uniform", "linear"):
-        sys.exit(__doc__)
-    (uniform if sys.argv[1] == "uniform" else linear)(sys.argv[2], float(sys.argv[3]))
+    sys.exit(main())

@@ -1,6 +1,9 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 """The coagulationFoam column of issue 16 (Sabelfeld-Kolodko, Figs 3-5 setting).
 
+    python3 -m coagulationPost.coagulationDiffusionColumn setup CASE N_PER_CELL [NX]
+    python3 -m coagulationPost.coagulationDiffusionColumn compare CASE REF.csv [NX TIMES SIZES HALF]
+
   setup CASE N_PER_CELL [NX]
                             the 2-D case: [-4R, 4R]^2 (R = 1), NX x NX cells (80), rebound walls,
                             no flow, constant kernel K = 1, n0 = 1 monomers uniform in the
@@ -18,13 +21,20 @@
                             last column, f);
                             exit 1 unless every |z| against n^E is below 4 and n^L is off by
                             more than 5 standard errors somewhere at the last time (t' = 10)
+
+The CSV (stdout) is what coagulationPost.coagulationDiffusionFigures figs3to8 reads as its
+third column.  Particles: coagulationPost.cloud (the case is written with writeFormat ascii).
 """
 import sys
 
 import numpy as np
 from scipy.special import erf
 
+from . import cloud
+
 NX, W = 80, 4.0
+D = 0.0888
+_trapz = getattr(np, "trapezoid", None) or np.trapz
 
 
 def setup(case, n_per_cell, nx=NX):
@@ -54,49 +64,55 @@ dispersion { type constant; D 0.0888; }
 """ % n_per_cell)
 
 
-def cell_of(case, time):
-    """Each particle's cell, from the ASCII coordinates file: (a b c d) celli tetFace tetPt."""
-    text = open("%s/%s/lagrangian/coagulationCloud/coordinates" % (case, time)).read()
-    rows = [l for l in text.splitlines() if l.startswith("(") and l.count(")") == 1 and len(l) > 20]
-    return np.array([int(l.split(")")[1].split()[0]) for l in rows], dtype=int)
-
-
-def field(case, time, name):
-    text = open("%s/%s/lagrangian/coagulationCloud/%s" % (case, time, name)).read()
-    start = text.index("(", text.index("\n", text.rindex("}")))
-    return np.array(text[start + 1:text.rindex(")")].split(), dtype=float)
-
-
-def diffusion_factor(t, half=0.3, D=0.0888):
-    """Average of N^D over [-half, half]^2 divided by N^D at 0 (exact Gaussian integral)."""
+def diffusion_factor(t, half=0.3, D=D):
+    """Average of N^D over [-half, half]^2 divided by N^D at 0: N^D(x, y) = one(x) one(y),
+    one(x) = (erf((1 - x)/s) + erf((1 + x)/s))/2, s = 2 sqrt(D t) (the unit square's
+    monomers spread by diffusion alone); trapezoidal rule on 201 points."""
     s = 2 * np.sqrt(D * t)
     x = np.linspace(-half, half, 201)
     one = 0.5 * (erf((1 - x) / s) + erf((1 + x) / s))
-    return (np.trapz(one, x) / (2 * half)) ** 2 / one[100] ** 2
+    return (_trapz(one, x) / (2 * half)) ** 2 / one[100] ** 2
+
+
+def central_cells(nx, half, w=W, depth=0.1):
+    """The cells of the nx x nx mesh of [-w, w]^2 (blockMesh order: x fastest) whose centres
+    have |x|, |y| < half: (mask [nx*nx], their volume, the half-width of the square they
+    cover)."""
+    H = 2 * w / nx
+    i = (np.arange(nx) + 0.5) * H - w
+    ix, iy = np.meshgrid(i, i)                  # blockMesh: x fastest
+    centre = ((np.abs(ix) < half) & (np.abs(iy) < half)).ravel()
+    vol = centre.sum() * H * H * depth
+    return centre, vol, np.sqrt(centre.sum()) * H / 2
+
+
+def size_density(inside, mass, weight, l, vol):
+    """Number density of size l (mass rounded to the nearest integer) among the particles
+    marked inside, and its standard error: (sum w, sqrt(sum w^2)) / vol."""
+    sel = inside & (np.rint(mass) == l)
+    return weight[sel].sum() / vol, np.sqrt((weight[sel] ** 2).sum()) / vol
+
+
+def z_score(n, ref, se):
+    """(n - ref)/se, NaN where se is 0."""
+    return (n - ref) / se if se > 0 else np.nan
 
 
 def compare(case, ref, nx=NX, times=("1", "5", "10"), sizes=10, half=0.3):
     r = np.genfromtxt(ref, delimiter=",", names=True)
-    H = 2 * W / nx
-    i = (np.arange(nx) + 0.5) * H - W
-    ix, iy = np.meshgrid(i, i)                  # blockMesh: x fastest
-    centre = ((np.abs(ix) < half) & (np.abs(iy) < half)).ravel()
-    vol = centre.sum() * H * H * 0.1
-    half = np.sqrt(centre.sum()) * H / 2        # the region the cells cover
+    centre, vol, half = central_cells(nx, half)  # half: the region the cells cover
     print("t',l,n_coagulationFoam,se,nE,nL,z_E,z_L,f")
     worst = {}
     for t in times:
-        cells = cell_of(case, t)
-        m, w = field(case, t, "mass"), field(case, t, "weight")
+        cells = cloud.cell_of(case, t)
+        m, w = cloud.field(case, t, "mass"), cloud.field(case, t, "weight")
         inside = centre[cells]
         f = diffusion_factor(float(t), half)
         for l in range(1, sizes + 1):
-            sel = inside & (np.rint(m) == l)
-            n = w[sel].sum() / vol
-            se = np.sqrt((w[sel] ** 2).sum()) / vol
+            n, se = size_density(inside, m, w, l, vol)
             row = (r["t"] == float(t)) & (r["l"] == l)
             nE, nL = float(r["nE"][row][0]) * f, float(r["nL"][row][0]) * f
-            zE, zL = (n - nE) / se if se > 0 else np.nan, (n - nL) / se if se > 0 else np.nan
+            zE, zL = z_score(n, nE, se), z_score(n, nL, se)
             print("%s,%d,%.6g,%.3g,%.6g,%.6g,%+.2f,%+.2f,%.6g" % (t, l, n, se, nE, nL, zE, zL, f))
             worst.setdefault(t, []).append((zE, zL))
     ok = True
@@ -110,13 +126,20 @@ def compare(case, ref, nx=NX, times=("1", "5", "10"), sizes=10, half=0.3):
     return ok
 
 
-if __name__ == "__main__":
-    if sys.argv[1] == "setup":
-        setup(sys.argv[2], int(sys.argv[3]), *(int(a) for a in sys.argv[4:5]))
-    else:
-        extra = sys.argv[4:]
+def main(argv=None):
+    argv = sys.argv[1:] if argv is None else argv
+    if len(argv) in (3, 4) and argv[0] == "setup":
+        setup(argv[1], int(argv[2]), *(int(a) for a in argv[3:4]))
+        return 0
+    if len(argv) in (3, 7) and argv[0] == "compare":
         kw = {}
-        if extra:
-            kw = dict(nx=int(extra[0]), times=tuple(extra[1].split(",")), sizes=int(extra[2]),
-                      half=float(extra[3]))
-        sys.exit(0 if compare(sys.argv[2], sys.argv[3], **kw) else 1)
+        if len(argv) == 7:
+            kw = dict(nx=int(argv[3]), times=tuple(argv[4].split(",")), sizes=int(argv[5]),
+                      half=float(argv[6]))
+        return 0 if compare(argv[1], argv[2], **kw) else 1
+    print(__doc__, file=sys.stderr)
+    return 2
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,38 +1,47 @@
-#!/usr/bin/env python3
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 """Plots and summaries of Sabelfeld-Kolodko's Figs 2-10 (issue 16) from the CSV files written by
 build/tests/benchmarks/coagulationDiffusionFigures.
 
-    coagulationDiffusionFigures.py fig2      fig2.csv      OUTDIR   -> Fig2.png
-    coagulationDiffusionFigures.py figs3to8  figs3to8.csv  OUTDIR [column.csv]  -> Fig3..Fig8.png
-        column.csv: the third column, coagulationFoam's n_l at t' = 1, 5, 10
-        (tests/benchmarks/coagulationDiffusionColumn.sh), shown at x = 0 (divided by its f)
-    coagulationDiffusionFigures.py figs9to10 figs9to10.csv OUTDIR   -> Fig9.png, Fig10.png
+    python3 -m coagulationPost.coagulationDiffusionFigures fig2      fig2.csv      OUTDIR
+        -> Fig2.png
+    python3 -m coagulationPost.coagulationDiffusionFigures figs3to8  figs3to8.csv  OUTDIR [column.csv]
+        -> Fig3..Fig8.png; column.csv: the third column, coagulationFoam's n_l at t' = 1, 5, 10
+        (tests/benchmarks/coagulationDiffusionColumn.sh, coagulationPost.coagulationDiffusionColumn),
+        shown at x = 0 (divided by its f)
+    python3 -m coagulationPost.coagulationDiffusionFigures figs9to10 figs9to10.csv OUTDIR
+        -> Fig9.png, Fig10.png
 
 Each prints the numbers the README quotes. Exit status 1 if a check fails: fig2, the Monte
 Carlo F above F_R; figs3to8, more of the estimator's 95 % intervals (monomers, one per time: the
 sizes share their paths) miss the closed-form n^L than a binomial(n, 0.05) allows at the 0.5 %
 level; figs9to10, the same for N^D and N^CD, or
 N^D/N^CD - 1 above 5 % at b = 0.01 (any t'), or (N^D - N^CD)/N^CD not above 1 (interval) at b = 1, t' = 1.
+Exit status 2: bad arguments.
 """
 import csv
-import math
 import os
 import sys
 
-import matplotlib
+from .statistics import Z95
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+
+def _pyplot():
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    return plt
 
 
 def read(path):
+    """The rows of a CSV file as dicts of strings."""
     with open(path) as f:
         return list(csv.DictReader(f))
 
 
 def allowed(n, p=0.05, level=0.005):
-    """largest k with P(Bin(n, p) > k) >= level (misses allowed)."""
+    """The misses allowed among n intervals of coverage 1 - p: the smallest k with
+    P(Bin(n, p) > k) < level (more than k misses has probability below level; the
+    binomial's quantile at 1 - level, scipy.stats.binom.ppf(1 - level, n, p), but for ties)."""
     pk = (1 - p) ** n
     cdf = pk
     k = 0
@@ -44,6 +53,7 @@ def allowed(n, p=0.05, level=0.005):
 
 
 def fig2(rows, out):
+    plt = _pyplot()
     ok = True
     plt.figure(figsize=(6, 4))
     for D in sorted({r["D"] for r in rows}, key=float):
@@ -71,11 +81,13 @@ def fig2(rows, out):
     plt.legend(fontsize=7)
     plt.tight_layout()
     plt.savefig(os.path.join(out, "Fig2.png"), dpi=110)
+    plt.close()
     return ok
 
 
 def foam_rows(path):
-    """coagulationFoam's column, rescaled to x = 0: n/f and 1.96 se/f."""
+    """coagulationFoam's column (coagulationDiffusionColumn compare's CSV, '#' lines
+    skipped), rescaled to x = 0: tuples (t', l, n/f, Z95 se/f, z_E, z_L); [] without a path."""
     if not path:
         return []
     with open(path) as f:
@@ -84,22 +96,31 @@ def foam_rows(path):
     for r in csv.DictReader(lines):
         f = float(r["f"])
         rows.append((float(r["t'"]), int(r["l"]), float(r["n_coagulationFoam"]) / f,
-                     1.96 * float(r["se"]) / f, float(r["z_E"]), float(r["z_L"])))
+                     Z95 * float(r["se"]) / f, float(r["z_E"]), float(r["z_L"])))
     return rows
 
 
-def figs3to8(rows, out, column=None):
-    ok = True
-    foam = foam_rows(column)
-    haveE = bool(rows[0]["nE"])
+def monomer_misses(rows):
+    """(misses, intervals): the monomer rows (l = 1) whose 95 % interval nL +- nL_hw misses
+    the closed form nLexact; the sizes of one time share their paths, so one check per time.
+    A zero half-width (every path ended in G, early times: the Wald interval degenerates)
+    misses when nL is off by more than 1e-4 relative."""
     misses, n = 0, 0
-    for r in rows:  # sizes of one time share their paths: one check per time (monomers)
+    for r in rows:
         if r["l"] != "1":
             continue
         diff, hw = abs(float(r["nL"]) - float(r["nLexact"])), float(r["nL_hw"])
         n += 1
-        # hw = 0: every path ended in G (early times), the Wald interval degenerates
         misses += diff > hw if hw > 0 else diff > 1e-4 * float(r["nLexact"])
+    return misses, n
+
+
+def figs3to8(rows, out, column=None):
+    plt = _pyplot()
+    ok = True
+    foam = foam_rows(column)
+    haveE = bool(rows[0]["nE"])
+    misses, n = monomer_misses(rows)
     print("n^L estimator against its closed form u_l(t') N^D: %d of %d monomer intervals miss "
           "(allowed %d)" % (misses, n, allowed(n)))
     if misses > allowed(n):
@@ -129,6 +150,7 @@ def figs3to8(rows, out, column=None):
         plt.legend(fontsize=7)
         plt.tight_layout()
         plt.savefig(os.path.join(out, "Fig%d.png" % fig), dpi=110)
+        plt.close()
         if haveE:
             for size in (1, 5, 10, 15, 20):
                 m = [r for r in rs if int(r["l"]) == size]
@@ -157,6 +179,7 @@ def figs3to8(rows, out, column=None):
         plt.legend(fontsize=7)
         plt.tight_layout()
         plt.savefig(os.path.join(out, "Fig%d.png" % fig), dpi=110)
+        plt.close()
     print("times: %d from t' = %g to %g" % (len(times), times[0], times[-1]))
     for tt in sorted({x[0] for x in foam}):
         fr = [x for x in foam if x[0] == tt and x[3] > 0]
@@ -168,13 +191,29 @@ def figs3to8(rows, out, column=None):
     return ok
 
 
-def figs9to10(rows, out):
-    ok = True
+def estimator_misses(rows):
+    """(misses, intervals): the 95 % intervals of N^D and N^CD (ND_est +- ND_hw,
+    NCD_est +- NCD_hw) that miss the formulas ND, NCD; every estimate has its own paths."""
     misses, n = 0, 0
-    for r in rows:  # every estimate has its own paths
+    for r in rows:
         n += 2
         misses += abs(float(r["ND_est"]) - float(r["ND"])) > float(r["ND_hw"])
         misses += abs(float(r["NCD_est"]) - float(r["NCD"])) > float(r["NCD_hw"])
+    return misses, n
+
+
+def excess_interval(r):
+    """Bounds of (N^D - N^CD)/N^CD from the two estimators' intervals of row r:
+    (ND_est - ND_hw)/(NCD_est + NCD_hw) - 1 and (ND_est + ND_hw)/(NCD_est - NCD_hw) - 1."""
+    lo = (float(r["ND_est"]) - float(r["ND_hw"])) / (float(r["NCD_est"]) + float(r["NCD_hw"])) - 1
+    hi = (float(r["ND_est"]) + float(r["ND_hw"])) / (float(r["NCD_est"]) - float(r["NCD_hw"])) - 1
+    return lo, hi
+
+
+def figs9to10(rows, out):
+    plt = _pyplot()
+    ok = True
+    misses, n = estimator_misses(rows)
     print("N^D, N^CD estimators against (29), (30): %d of %d intervals miss (allowed %d)"
           % (misses, n, allowed(n)))
     if misses > allowed(n):
@@ -196,8 +235,7 @@ def figs9to10(rows, out):
             msg = "x' = (%s, 0), b = %s: sup_t' (N^D - N^CD)/N^CD = %.4f (formula)" % (x, b, worst)
             if r1:
                 r = r1[0]
-                lo = (float(r["ND_est"]) - float(r["ND_hw"])) / (float(r["NCD_est"]) + float(r["NCD_hw"])) - 1
-                hi = (float(r["ND_est"]) + float(r["ND_hw"])) / (float(r["NCD_est"]) - float(r["NCD_hw"])) - 1
+                lo, hi = excess_interval(r)
                 rel = float(r["ND"]) / float(r["NCD"]) - 1
                 msg += "; at t' = 1: formula %.4f, estimator [%.4f, %.4f]" % (rel, lo, hi)
                 if b == "1" and not (rel > 1 and lo > 1):
@@ -213,10 +251,12 @@ def figs9to10(rows, out):
         plt.legend(fontsize=7)
         plt.tight_layout()
         plt.savefig(os.path.join(out, "Fig%d.png" % fig), dpi=110)
+        plt.close()
     return ok
 
 
-def main(argv):
+def main(argv=None):
+    argv = sys.argv[1:] if argv is None else argv
     if len(argv) not in (3, 4) or argv[0] not in ("fig2", "figs3to8", "figs9to10") or (
             len(argv) == 4 and argv[0] != "figs3to8"):
         print(__doc__)
@@ -230,4 +270,4 @@ def main(argv):
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+    sys.exit(main())

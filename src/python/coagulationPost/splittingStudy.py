@@ -1,11 +1,22 @@
-#!/usr/bin/python3
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-"""splittingStudy.py OUT: tables and plots of splittingStudy.sh's runs (issue 20).
+"""Tables and plots of tests/benchmarks/splittingStudy.sh's runs (issue 20).
 
-Writes OUT/splittingStudy.md (tables) and OUT/splittingOrder.png (error against dt).
-Errors are relative to the analytic cell averages the report writes (eqs 39-45, 50); the
-95 % intervals of parts A and B are the report's (successive samples taken as independent, as
-in the paper); part C's are Student-t intervals over independent realisations.
+    python3 -m coagulationPost.splittingStudy OUT
+
+Writes OUT/splittingStudy.md (tables; also printed) and OUT/splittingOrder.png (error
+against dt).  Errors are relative to the analytic cell averages the report writes (eqs
+39-45, 50); the 95 % intervals of parts A and B are the report's (successive samples taken
+as independent, as in the paper); parts C, D and F's are Student-t intervals over
+independent realisations (statistics.standard_error_from_realisations).
+
+Parts (each only if OUT holds its runs):
+  A  OUT/A_<scheme>_<dt>/       M1 without coagulation, additive-duct geometry
+  B  OUT/B_<scheme>_<dt>/       constant-kernel duct, M0..M3
+  C  OUT/C_<scheme>_<dt>_r<k>/  additive-kernel duct, realisations pooled
+  E  OUT/E_<scheme>_<dt>/       cost at equal accuracy (and the first C run of each scheme)
+  D  OUT/D_<scheme>_<dt>_r<k>.txt   ductReference --cells, no coagulation, seeds pooled
+  F  OUT/F_<scheme>_<dt>_r<k>.txt   the same with coagulation
+a run folder holding results/moments_full.csv (coagulationReport) and wallTime.
 """
 import glob
 import math
@@ -14,13 +25,24 @@ import re
 import sys
 
 import numpy as np
-from scipy import stats
 
-out = sys.argv[1]
-rows = []
+from .statistics import Z95, fit_exponent, standard_error_from_realisations
+
+DX = 2e-3           # cells of the additive-duct geometry (A, C, E)
+DX_REFERENCE = 4e-3  # cells of the constant-duct geometry (D)
+SCHEMES = ("Lie", "Strang")
+_trapz = getattr(np, "trapezoid", None) or np.trapz
 
 
-def load(name):
+def _pyplot():
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    return plt
+
+
+def load(out, name):
+    """moments_full.csv of run OUT/NAME (named columns) and the run's wall time."""
     d = os.path.join(out, name)
     f = np.genfromtxt(d + "/results/moments_full.csv", delimiter=",", names=True)
     wall = float(open(d + "/wallTime").read())
@@ -32,34 +54,75 @@ def predicted_m1(scheme, dt, lo, hi, rate=1e5, u=1.0):
     the cell average of I dt floor(x/h + s), h = u dt, s = 0 (Lie) or 1/2 (Strang)."""
     h, s = u * dt, (0.0 if scheme == "Lie" else 0.5)
     x = np.linspace(lo, hi, 200001)
-    return rate * dt * np.trapz(np.floor(x / h + s), x) / (hi - lo)
+    return rate * dt * _trapz(np.floor(x / h + s), x) / (hi - lo)
 
 
 def slope(dts, errs):
     """least-squares slope of log|err| against log dt"""
-    return np.polyfit(np.log(dts), np.log(np.abs(errs)), 1)[0]
+    return fit_exponent(dts, np.abs(errs))
 
 
-md = ["# Splitting study (tests/benchmarks/splittingStudy.sh)", ""]
-dx = 2e-3
-fig_data = {}
+def pooled(a):
+    """mean over the seeds (axis 0), the Student-t 95 % half-width and the count R"""
+    a = np.array(a)
+    with np.errstate(invalid="ignore"):  # M0 is infinite without coagulation: unused
+        return a.mean(0), standard_error_from_realisations(a)[1], len(a)
 
-# ---- A: M1 without coagulation, additive-duct geometry
-A = sorted(glob.glob(out + "/A_*"))
-if A:
+
+def weighted_log_slope(dts, errs, half_widths):
+    """Slope of log|err| against log dt, each point weighted by (err/se)^2 (the delta
+    method: se of log|err| = se/|err|), se = half-width/Z95: (slope, its standard error)."""
+    se = np.asarray(half_widths) / Z95
+    wts = (np.asarray(errs) / se) ** 2
+    X = np.vstack([np.log(dts), np.ones(len(dts))]).T
+    cov = np.linalg.inv(X.T @ (wts[:, None] * X))
+    b = cov @ X.T @ (wts * np.log(np.abs(errs)))
+    return b[0], math.sqrt(cov[0, 0])
+
+
+def reference_lines(lines, ncells=50):
+    """Relative errors [cell][k] of one ductReference --cells output: its lines
+    'cell I Mk VALUE%' (others skipped)."""
+    rel = np.zeros((ncells, 4))
+    for line in lines:
+        t = line.split()
+        if t[0] == "cell":
+            rel[int(t[1]), int(t[2][1])] = float(t[3].rstrip("%")) / 100
+    return rel
+
+
+def reference_runs(out, part):
+    """{(scheme, dt): [relative errors [cell][k] of one seed]} of ductReference --cells files"""
+    runs = {}
+    for path in glob.glob(out + "/%s_*_r*.txt" % part):
+        m = re.match(part + r"_(Lie|Strang)_([0-9.e-]+)_r(\d+)\.txt", os.path.basename(path))
+        with open(path) as f:
+            rel = reference_lines(f)
+        runs.setdefault((m.group(1), float(m.group(2))), []).append(rel)
+    return runs
+
+
+def _by_dt(paths):
+    return sorted(paths, key=lambda p: float(p.split("_")[-1]))
+
+
+def part_a(out, md, fig_data):
+    """A: M1 without coagulation, additive-duct geometry."""
+    if not sorted(glob.glob(out + "/A_*")):
+        return
     md += ["## A. M1 near the inlet and at the outlet (additive-duct geometry, no coagulation)", "",
            "Relative error of the time-averaged M1 against I x/u (eq 50), measured ± 95 % "
            "(predicted: the scheme's exact expectation). Wall: the run's seconds.", "",
            "| scheme | dt | dx/h | cell 0 | cell 1 | cell 2 | cell 49 (outlet) | wall |",
            "| --- | --- | --- | --- | --- | --- | --- | --- |"]
-    for scheme in ("Lie", "Strang"):
+    for scheme in SCHEMES:
         dts, pe, me, mc = [], [], [], []
-        for d in sorted(glob.glob(out + "/A_%s_*" % scheme), key=lambda p: float(p.split("_")[-1])):
+        for d in _by_dt(glob.glob(out + "/A_%s_*" % scheme)):
             dt = float(d.split("_")[-1])
-            f, wall = load(os.path.basename(d))
+            f, wall = load(out, os.path.basename(d))
             cells = []
             for i in (0, 1, 2, 49):
-                lo, hi = i * dx, (i + 1) * dx
+                lo, hi = i * DX, (i + 1) * DX
                 exact = f["M1_analytic"][i]
                 p = predicted_m1(scheme, dt, lo, hi) / exact - 1
                 m = f["M1_mean"][i] / exact - 1
@@ -67,10 +130,10 @@ if A:
                 cells.append("%+.2f ± %.2f %% (%+.2f %%)" % (100 * m, 100 * c, 100 * p))
                 if i == 0:
                     dts.append(dt); pe.append(p); me.append(m); mc.append(c)
-            md.append("| %s | %g | %.3g | %s | %.0f s |" % (scheme, dt, dx / dt, " | ".join(cells), wall))
+            md.append("| %s | %g | %.3g | %s | %.0f s |" % (scheme, dt, DX / dt, " | ".join(cells), wall))
         fig_data[("A", scheme)] = (np.array(dts), np.array(pe), np.array(me), np.array(mc))
     md.append("")
-    for scheme in ("Lie", "Strang"):
+    for scheme in SCHEMES:
         dts, pe, me, mc = fig_data[("A", scheme)]
         ok = np.abs(me) > 2 * mc
         txt = "%s: order of the predicted cell-0 error %.2f" % (scheme, slope(dts, pe))
@@ -83,18 +146,20 @@ if A:
         md.append("- " + txt)
     md.append("")
 
-# ---- B: constant-kernel duct, M0..M3 against eqs 39-45
-B = glob.glob(out + "/B_*")
-if B:
+
+def part_b(out, md, fig_data):
+    """B: constant-kernel duct, M0..M3 against eqs 39-45."""
+    if not glob.glob(out + "/B_*"):
+        return
     md += ["## B. Constant-kernel duct (SWA, n = 256): M0..M3 against eqs 39-45", "",
            "Relative error, measured ± 95 %, in the first cell and over cells 45..49 (outlet).", "",
            "| scheme | dt | M0 cell 0 | M1 cell 0 | M2 cell 0 | M3 cell 0 | M0 outlet | M2 outlet | M3 outlet | wall |",
            "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
-    for scheme in ("Lie", "Strang"):
+    for scheme in SCHEMES:
         dts, e0 = [], []
-        for d in sorted(glob.glob(out + "/B_%s_*" % scheme), key=lambda p: float(p.split("_")[-1])):
+        for d in _by_dt(glob.glob(out + "/B_%s_*" % scheme)):
             dt = float(d.split("_")[-1])
-            f, wall = load(os.path.basename(d))
+            f, wall = load(out, os.path.basename(d))
             cells = []
             for k in range(4):
                 e = f["M%d_mean" % k][0] / f["M%d_analytic" % k][0] - 1
@@ -110,7 +175,7 @@ if B:
             md.append("| %s | %g | %s | %.0f s |" % (scheme, dt, " | ".join(cells), wall))
         fig_data[("B", scheme)] = (np.array(dts), np.array([e for e, _ in e0]), np.array([c for _, c in e0]))
     md.append("")
-    for scheme in ("Lie", "Strang"):
+    for scheme in SCHEMES:
         dts, e, c = fig_data[("B", scheme)]
         ok = np.abs(e) > 2 * c
         if ok.sum() >= 2:
@@ -121,26 +186,22 @@ if B:
                       % (scheme, ok.sum(), len(dts)))
     md.append("")
 
-# ---- C: additive-kernel duct (the tutorial), realisations pooled
-C = glob.glob(out + "/C_*")
-if C:
+
+def part_c(out, md):
+    """C: additive-kernel duct (the tutorial), realisations pooled."""
+    if not glob.glob(out + "/C_*"):
+        return
     md += ["## C. Additive-kernel duct (tutorial: SWA, n = 2048, dt = 4e-4), independent realisations", "",
            "Mean of the realisations' time averages over [0.2, 0.4], ± Student-t 95 % over R.", "",
            "| scheme | R | M1 cell 1 (x = 0.003) | M1 cell 2 | M1 last cell (9.90e3 exact) | M2 last cell | cells 1..49 with M1 off I x/u beyond the interval | wall per run |",
            "| --- | --- | --- | --- | --- | --- | --- | --- |"]
-    for scheme in ("Lie", "Strang"):
+    for scheme in SCHEMES:
         runs = sorted(glob.glob(out + "/C_%s_*" % scheme))
-        fs = [load(os.path.basename(r)) for r in runs]
+        fs = [load(out, os.path.basename(r)) for r in runs]
         R = len(fs)
-        m1 = np.array([f["M1_mean"] for f, _ in fs])
-        m2 = np.array([f["M2_mean"] for f, _ in fs])
         exact = fs[0][0]["M1_analytic"]
-        tq = stats.t.ppf(0.975, R - 1) if R > 1 else float("nan")
-
-        def ci(a):
-            return a.mean(0), tq * a.std(0, ddof=1) / math.sqrt(R)
-        mm1, c1 = ci(m1)
-        mm2, c2 = ci(m2)
+        mm1, c1, _ = pooled([f["M1_mean"] for f, _ in fs])
+        mm2, c2, _ = pooled([f["M2_mean"] for f, _ in fs])
         off = int(np.sum(np.abs(mm1[1:] - exact[1:]) > c1[1:]))
         cells = ["%+.2f ± %.2f %%" % (100 * (mm1[i] / exact[i] - 1), 100 * c1[i] / exact[i]) for i in (1, 2)]
         md.append("| %s | %d | %s | %.4g ± %.2g | %.4g ± %.2g | %d of 49 | %.0f s |"
@@ -148,10 +209,13 @@ if C:
                      np.mean([w for _, w in fs])))
     md.append("")
 
-# ---- E: cost at equal accuracy (additive duct with coagulation, one seed each)
-E = sorted(glob.glob(out + "/E_*"))
-C_ = {sc: sorted(glob.glob(out + "/C_%s_*" % sc)) for sc in ("Lie", "Strang")}
-if E:
+
+def part_e(out, md):
+    """E: cost at equal accuracy (additive duct with coagulation, one seed each)."""
+    E = sorted(glob.glob(out + "/E_*"))
+    if not E:
+        return
+    C_ = {sc: sorted(glob.glob(out + "/C_%s_*" % sc)) for sc in SCHEMES}
     md += ["## E. Cost at equal accuracy: additive-kernel duct (SWA, n = 2048, t = 0..0.4)", "",
            "Expected outlet-cell M1 error of the scheme (its exact expectation; the measured one "
            "is below one run's resolution), and the run's wall time.", "",
@@ -160,46 +224,25 @@ if E:
     entries = [(os.path.basename(e), e) for e in E] + [(os.path.basename(C_[sc][0]), C_[sc][0]) for sc in C_ if C_[sc]]
     for name, path in sorted(entries, key=lambda e: (e[0].split("_")[1], -float(e[0].split("_")[2]))):
         scheme, dt = name.split("_")[1], float(name.split("_")[2])
-        f, wall = load(name)
-        out49 = predicted_m1(scheme, dt, 49 * dx, 50 * dx) / (1e5 * 49.5 * dx) - 1
-        out1 = predicted_m1(scheme, dt, dx, 2 * dx) / (1e5 * 1.5 * dx) - 1
-        md.append("| %s | %g | %.2g | %+.3f %% | %+.2f %% | %.0f s |" % (scheme, dt, dt / dx, 100 * out49, 100 * out1, wall))
+        f, wall = load(out, name)
+        out49 = predicted_m1(scheme, dt, 49 * DX, 50 * DX) / (1e5 * 49.5 * DX) - 1
+        out1 = predicted_m1(scheme, dt, DX, 2 * DX) / (1e5 * 1.5 * DX) - 1
+        md.append("| %s | %g | %.2g | %+.3f %% | %+.2f %% | %.0f s |" % (scheme, dt, dt / DX, 100 * out49, 100 * out1, wall))
     md.append("")
 
-# ---- D: the OpenFOAM-free reference, constant-kernel duct, seeds pooled
-def reference_runs(part):
-    """{(scheme, dt): [relative errors [cell][k] of one seed]} of ductReference --cells files"""
-    runs = {}
-    for path in glob.glob(out + "/%s_*_r*.txt" % part):
-        m = re.match(part + r"_(Lie|Strang)_([0-9.e-]+)_r(\d+)\.txt", os.path.basename(path))
-        rel = np.zeros((50, 4))
-        for line in open(path):
-            t = line.split()
-            if t[0] == "cell":
-                rel[int(t[1]), int(t[2][1])] = float(t[3].rstrip("%")) / 100
-        runs.setdefault((m.group(1), float(m.group(2))), []).append(rel)
-    return runs
 
-
-def pooled(a):
-    """mean over the seeds and the Student-t 95 % half-width"""
-    a = np.array(a)
-    R = len(a)
-    with np.errstate(invalid="ignore"):  # M0 is infinite without coagulation: unused
-        return a.mean(0), stats.t.ppf(0.975, R - 1) * a.std(0, ddof=1) / math.sqrt(R), R
-
-
-D = glob.glob(out + "/D_*_r*.txt")
-if D:
-    dxD = 4e-3
-    runs = reference_runs("D")
-
+def part_d(out, md, fig_data):
+    """D: the OpenFOAM-free reference, constant-duct geometry without coagulation."""
+    if not glob.glob(out + "/D_*_r*.txt"):
+        return
+    dxD = DX_REFERENCE
+    runs = reference_runs(out, "D")
     md += ["## D. Constant-duct geometry without coagulation, OpenFOAM-free reference (SWA, n = 4096, t = 4)", "",
            "Relative error of M1 against eq 41, mean over R seeds ± Student-t 95 %, the "
            "scheme's exact expectation in brackets; cells 45..49 (outlet) averaged.", "",
            "| scheme | dt | dx/h | R | M1 cell 0 | M1 cell 1 | M1 outlet (45..49) |",
            "| --- | --- | --- | --- | --- | --- | --- |"]
-    for scheme in ("Lie", "Strang"):
+    for scheme in SCHEMES:
         dts = sorted(dt for (sc, dt) in runs if sc == scheme)
         pts = []
         for dt in dts:
@@ -214,7 +257,7 @@ if D:
             pts.append((dt, mean[0, 1], ci[0, 1], pred[0], mean[0, 0], ci[0, 0]))
         fig_data[("D", scheme)] = np.array(pts)
     md.append("")
-    for scheme in ("Lie", "Strang"):
+    for scheme in SCHEMES:
         p = fig_data[("D", scheme)]
         ok = np.abs(p[:, 1]) > 2 * p[:, 2]
         txt = "%s: order of the exact expected M1 cell-0 error %.2f" % (scheme, slope(p[:, 0], p[:, 3]))
@@ -225,27 +268,26 @@ if D:
         else:
             txt += "; measured errors resolved beyond 2 CI at %d dt: no fit" % ok.sum()
         # all dt, log errors weighted by (error/SE)^2 (delta method), with the slope's SE
-        se = p[:, 2] / 1.96
-        wts = (p[:, 1] / se) ** 2
-        X = np.vstack([np.log(p[:, 0]), np.ones(len(p))]).T
-        cov = np.linalg.inv(X.T @ (wts[:, None] * X))
-        b = cov @ X.T @ (wts * np.log(np.abs(p[:, 1])))
-        txt += "; weighted fit over all %d dt: %.2f ± %.2f (1 SE)" % (len(p), b[0], math.sqrt(cov[0, 0]))
-        z = (p[:, 1] - p[:, 3]) / (p[:, 2] / 1.96)
+        b, b_se = weighted_log_slope(p[:, 0], p[:, 1], p[:, 2])
+        txt += "; weighted fit over all %d dt: %.2f ± %.2f (1 SE)" % (len(p), b, b_se)
+        z = (p[:, 1] - p[:, 3]) / (p[:, 2] / Z95)
         txt += "; measured minus expected, in standard errors: %s" % " ".join("%+.1f" % v for v in z)
         md.append("- " + txt)
     md.append("")
 
-# ---- F: the reference with coagulation (constant kernel), M0, M2, M3
-if glob.glob(out + "/F_*_r*.txt"):
-    runs = reference_runs("F")
+
+def part_f(out, md):
+    """F: the reference with coagulation (constant kernel), M0, M2, M3."""
+    if not glob.glob(out + "/F_*_r*.txt"):
+        return
+    runs = reference_runs(out, "F")
     md += ["## F. Constant-kernel duct with coagulation, OpenFOAM-free reference (SWA, n = 1024, t = 4)", "",
            "Relative errors against eqs 39, 43, 45, mean over R seeds ± Student-t 95 %; "
            "outlet: cells 45..49 averaged.", "",
            "| scheme | dt | R | M0 cell 0 | M2 cell 0 | M3 cell 0 | M0 outlet | M2 outlet | M3 outlet |",
            "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
     fits = {}
-    for scheme in ("Lie", "Strang"):
+    for scheme in SCHEMES:
         for dt in sorted(dt for (sc, dt) in runs if sc == scheme):
             a = np.array(runs[(scheme, dt)])
             mean, ci, R = pooled(a)
@@ -266,14 +308,10 @@ if glob.glob(out + "/F_*_r*.txt"):
             md.append("- %s M%d outlet: resolved beyond 2 CI at %d of %d dt" % (scheme, k, ok.sum(), len(p)))
     md.append("")
 
-open(os.path.join(out, "splittingStudy.md"), "w").write("\n".join(md) + "\n")
-print("\n".join(md))
 
-# ---- plot
-try:
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+def plot(out, fig_data):
+    """splittingOrder.png: |error| against dt of parts A, B and D."""
+    plt = _pyplot()
     fig, axes = plt.subplots(1, 3, figsize=(15, 4))
     for scheme, col in (("Lie", "C0"), ("Strang", "C1")):
         if ("A", scheme) in fig_data:
@@ -294,5 +332,38 @@ try:
         ax.set_xscale("log"); ax.set_yscale("log"); ax.set_xlabel("dt"); ax.legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(os.path.join(out, "splittingOrder.png"), dpi=110)
-except ImportError:
-    pass
+    plt.close(fig)
+
+
+def study(out):
+    """The tables (markdown lines) of the runs in OUT, in the order A, B, C, E, D, F, and
+    the data of the plot."""
+    md = ["# Splitting study (tests/benchmarks/splittingStudy.sh)", ""]
+    fig_data = {}
+    part_a(out, md, fig_data)
+    part_b(out, md, fig_data)
+    part_c(out, md)
+    part_e(out, md)
+    part_d(out, md, fig_data)
+    part_f(out, md)
+    return md, fig_data
+
+
+def main(argv=None):
+    argv = sys.argv[1:] if argv is None else argv
+    if len(argv) != 1:
+        print(__doc__, file=sys.stderr)
+        return 2
+    out = argv[0]
+    md, fig_data = study(out)
+    open(os.path.join(out, "splittingStudy.md"), "w").write("\n".join(md) + "\n")
+    print("\n".join(md))
+    try:
+        plot(out, fig_data)
+    except ImportError:   # no matplotlib: the tables only
+        pass
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
