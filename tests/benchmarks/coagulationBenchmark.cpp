@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 // Throughput of the cell algorithms: events (accepted + fictitious coagulations) per second
 // for N computational particles in one cell, single thread; and the accepted (real) events
-// alone, the rate issue 19 counts (for SWA with the additive kernel, whose majorant is exact,
+// alone, the rate doc/performance.md reports (for SWA with the additive kernel, whose majorant is exact,
 // the two differ only by the rejected j1 == j2 proposals, 1/N of them).
 //
 // The particle number is held roughly constant by timing short windows of physical time and

@@ -1,17 +1,17 @@
 #!/bin/bash
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-# The coagulationFoam column of issue 16: the coagulation-diffusion problem of Sabelfeld and
+# The coagulationFoam column: the coagulation-diffusion problem of Sabelfeld and
 # Kolodko (Figs 3-5: K = 1, n0 = 1 monomers uniform in the square [-R, R]^2, D = 8.88e-2 R^2/T_c)
 # solved by coagulationFoam itself (SWA, constant-D random walk, no effective source), its
 # n_l(t', 0), l = 1..10, at t' = 1, 5, 10 beside the converged Eulerian reference n^E and the
-# Lagrangian model n^L (tests/benchmarks/eulerianReference). About 2 minutes on 2 cores.
+# Lagrangian model n^L (applications/studies/eulerianReference). About 2 minutes on 2 cores.
 #   tests/benchmarks/coagulationDiffusionColumn.sh [OUTDIR] [PARTICLES_PER_CELL=150] [SIZES=10]
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 . "$here/../../etc/functions"
 out="${1:-/tmp/coagulationDiffusionColumn}"; n="${2:-150}"; sizes="${3:-10}"
 rm -rf "$out"; mkdir -p "$out"
-"$COAGULATIONFOAM_BUILD/tests/benchmarks/eulerianReference" --W 4 --gamma 1.05 --Lambda 500 \
+"$COAGULATIONFOAM_BUILD/applications/studies/eulerianReference" --W 4 --gamma 1.05 --Lambda 500 \
     > "$out/eulerian.csv" 2> "$out/eulerian.log"
 cp -r "$COAGULATIONFOAM_DIR/tutorials/constantKernelDuct" "$out/case"
 cd "$out/case"

@@ -9,7 +9,7 @@
 #   1x2          1 rank, 2 threads
 #   2x1simple    2 ranks x 1 thread, decomposePar simple (2 1 1): equal cell counts
 #   2x1work      2 ranks x 1 thread, hierarchical (2 1 1) with weightField coagulationWork
-#   2x1cloudMove 2x1work moving with Cloud::move (coagulationCloudMove 1), as before issue 19
+#   2x1cloudMove 2x1work moving with Cloud::move (coagulationCloudMove 1)
 #   2x1cut       2 ranks x 1 thread, method manual from workDecomposition: the smallest
 #                largest share of coagulationWork (not in the default set)
 #   2x1runs      2x1cut with runsPerPart 3: up to 6 runs of cells dealt to the 2 ranks

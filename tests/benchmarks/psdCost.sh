@@ -1,5 +1,5 @@
 #!/bin/bash
-# The cost of a probe size distribution (issue 18): the additive-kernel duct (tutorial,
+# The cost of a probe size distribution: the additive-kernel duct (tutorial,
 # n and endTime as given, one thread), run alternately without and with a sizeDistribution
 # function (three probes, 60 log bins from 1 to 1e6), PAIRS times; prints the wall time of
 # each run, the mean relative cost and the bytes the function writes.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-// Throughput of the pseudo-turbulence model (issue 17, PseudoTurbulence.hpp): velocity
+// Throughput of the pseudo-turbulence model (PseudoTurbulence.hpp): velocity
 // evaluations per second, single thread, for the paper's scale ratio L/eta = 1000 and a
 // range of harmonic counts n0 x n: one point at a time (velocity), with the gradient
 // (velocityGradient), and in batches of 1024 points (velocities); also the cost of drawing

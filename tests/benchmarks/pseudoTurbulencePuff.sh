@@ -1,6 +1,6 @@
 #!/bin/bash
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-# coagulationFoam advecting a coagulating puff in a frozen pseudo-turbulent U (issue 17):
+# coagulationFoam advecting a coagulating puff in a frozen pseudo-turbulent U:
 # pseudoTurbulenceField writes one sample of (5.14) into U; coagulationFoam (SWA, Saffman-Turner
 # K_11 = 1, no dispersion) runs to T; the clusters and mass in balls of cells are compared with
 # the Lagrangian direct estimator (3.14) in the same analytic field (pseudoTurbulencePuff).
@@ -12,7 +12,7 @@ here="$(cd "$(dirname "$0")" && pwd)"
 out="${1:-/tmp/pseudoTurbulencePuff}"; n="${2:-16}"; seed="${3:-1}"; T="${4:-2}"
 rm -rf "$out"; mkdir -p "$out"
 nx="${PUFF_NX:-48}"
-"$COAGULATIONFOAM_BUILD/tests/benchmarks/pseudoTurbulencePuff" --seed "$seed" --T "$T" \
+"$COAGULATIONFOAM_BUILD/applications/studies/pseudoTurbulencePuff" --seed "$seed" --T "$T" \
     --h "$(awk -v n="$nx" 'BEGIN{print 24/n}')" --points 40000 > "$out/lagrangian.csv" 2> "$out/lagrangian.log"
 cp -r "$COAGULATIONFOAM_DIR/tutorials/constantKernelDuct" "$out/case"
 cd "$out/case"

@@ -1,7 +1,7 @@
 #!/bin/bash
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 # splittingStudy.sh OUT [quick]: the splitting error of Lie and Strang against deltaT
-# (issue 20), on the paper's ducts, then tables and plots (splittingStudy.py).
+#, on the paper's ducts, then tables and plots (splittingStudy.py).
 #
 #   A  additive-duct geometry without coagulation (K0 = 1e-30): the mean of M1 is then the
 #      additive duct's own for SWA (the SWA jump keeps every particle's w*m in place), and
@@ -83,7 +83,7 @@ reference()
             for ((r = 1; r <= R; r++)); do
                 f="$out/${part}_${scheme}_${dt}_r$r.txt"
                 [ -s "$f" ] && continue
-                "$COAGULATIONFOAM_BUILD/tests/benchmarks/ductReference" SWA "$n" $((seed0 + r)) 4.0 \
+                "$COAGULATIONFOAM_BUILD/applications/studies/ductReference" SWA "$n" $((seed0 + r)) 4.0 \
                     --dt $dt --splitting $scheme --sample 4.8e-3 --cells "$@" > "$f.tmp" \
                     && mv "$f.tmp" "$f"
             done

@@ -1,7 +1,7 @@
 #!/bin/bash
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 # Particle moves per second of the transport half step for each velocity interpolation and
-# dispersion model (issue 15), on the 2-D sheared box of the scale issue: 50 x 10 cells,
+# dispersion model, on the 2-D sheared box of the scale issue: 50 x 10 cells,
 # u(y) = 1 + y/H, constant kernel with inception everywhere, nut = 1e-5 (1 + 9 y/H) for the
 # turbulent walk, rebound walls. Runs are alternated (ROUNDS rounds of every combination) so
 # that a busy machine biases none; prints transport ms per step and moves/s per run and the

@@ -49,7 +49,7 @@ expectFatal negativeSeed       "seed"             -entry seed -set -5
 expectFatal missingSampling    "sampling"         -entry sampling -remove
 expectFatal badSampleInterval  "sampleInterval"   -entry sampling/sampleInterval -set 1.5e-4
 
-# Unknown keywords are typos, in every dictionary (issue 13)
+# Unknown keywords are typos, in every dictionary
 expectFatal unknownTopLevel    "inceptoin"        -entry inceptoin -set "{ rate 1; }"
 expectFatal typoCellZone       "cellzone"         -entry inception/cellzone -set flame
 expectFatal typoInflow         "inflw"            -entry inflw -set "{ patches (inlet); density 1e9; mass 1; }"
@@ -69,7 +69,7 @@ expectFatal oneMaxParticles    "maxParticlesPerCell" -entry numberControl -set "
 expectFatal inflowOnOutlet     "no inward flow"   -entry inflow -set "{ patches (outlet); density 1e9; mass 1; }"
 expectFatal inflowNoPatches    "lists no patch"   -entry inflow -set "{ patches (); density 1e9; mass 1; }"
 expectFatal longSampleInterval "sampleInterval"   -entry sampling/sampleInterval -set 5
-# The random walk and the initial population (issue 15)
+# The random walk and the initial population
 expectFatal unknownInterpolation "cubic"          -entry transport -set "{ type frozenFlow; interpolationSchemes { U cubic; } }"
 expectFatal typoInterpolation  "'u'"              -entry transport -set "{ type frozenFlow; interpolationSchemes { u cellPoint; } }"
 expectFatal maxCoAboveOne      "maxCo"            -entry transport -set "{ type frozenFlow; interpolationSchemes { U cellPoint; } maxCo 2; }"
@@ -86,7 +86,7 @@ expectFatal initialNoField     "'n0'"             -entry initialPopulation -set 
 expectFatal initialBadTable    "sizeDistribution" -entry initialPopulation -set "{ numberDensity 1e9; sizeDistribution ((1 -0.5)); }"
 expectFatal initialTypo        "numberDensty"     -entry initialPopulation -set "{ numberDensty 1e9; mass 1; }"
 expectFatal initialTooMany     "free memory"      -entry initialPopulation -set "{ numberDensity 1e30; mass 1; }"
-# The user's cloud functions (issue 18: sizeDistribution)
+# The user's cloud functions (sizeDistribution)
 psdOk="type sizeDistribution; probes ((0.098 0.002 0.002)); bins { type integer; K 30; } timeStart 0.4;"
 expectFatal psdUnknownType     "sizeDist"         -entry cloudFunctions -set "{ psd1 { type sizeDist; } }"
 expectFatal psdNotDict         "not a dictionary" -entry cloudFunctions -set "{ psd1 sizeDistribution; }"
@@ -112,7 +112,7 @@ expectFatal endTimeBelowStep   "endTime"          -entry endTime -set 4e-5
 expectFatal courantAboveOne    "deltaT"           -entry deltaT -set 0.01
 file=constant/coagulationProperties
 
-# Field-driven sources (issue 15 item 5): fields in the start time of the base case, a
+# Field-driven sources: fields in the start time of the base case, a
 # rate field negative in cell 7 and a positive epsilon; no constant/transportProperties
 "$COAGULATIONFOAM_PYTHON" - "$base" <<'PY'
 import sys

@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 # The turbulent channel tutorial from the real pipeline, coarsened (50 x 10 x 10 cells, a
 # 0.2 s run): simpleFoam -> coagulationFoam with cellPoint velocity, turbulent dispersion
-# and stick walls, in serial and decomposed on 2 ranks (issue 15). Both close their mass
+# and stick walls, in serial and decomposed on 2 ranks. Both close their mass
 # balance with deposition; the two runs are independent realisations (the streams are
 # keyed by processor), so their time-averaged moments agree within the runs' intervals
 # cell by cell (at most 15 % of the cell-moments outside the 95 % intervals of the

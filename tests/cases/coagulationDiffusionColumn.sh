@@ -1,6 +1,6 @@
 #!/bin/bash
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-# The short version of tests/benchmarks/coagulationDiffusionColumn.sh (issue 16): the
+# The short version of tests/benchmarks/coagulationDiffusionColumn.sh: the
 # coagulation-diffusion problem of Sabelfeld-Kolodko's Figs 3-5 (K = 1, n0 = 1 monomers uniform
 # in [-R, R]^2, D = 8.88e-2 R^2/T_c) solved by coagulationFoam (SWA, constant-D walk) on a coarse
 # 40 x 40 box [-4R, 4R]^2, 200 particles a cell, dt' = 0.05, to t' = 5. n_l, l = 1..5, at
@@ -11,7 +11,7 @@
 . "$(dirname "$0")/caseLib.sh"
 c="$workDir/column"
 rm -rf "$c"; mkdir -p "$workDir"
-"$COAGULATIONFOAM_BUILD/tests/benchmarks/eulerianReference" --W 4 --dx 0.1 --dt 0.025 \
+"$COAGULATIONFOAM_BUILD/applications/studies/eulerianReference" --W 4 --dx 0.1 --dt 0.025 \
     --gamma 1.1 --Lambda 200 --sizes 5 --tmax 5 > "$workDir/eulerian.csv" 2> "$workDir/eulerian.log"
 cat "$workDir/eulerian.log"
 cp -r "$COAGULATIONFOAM_DIR/tutorials/constantKernelDuct" "$c"

@@ -1,6 +1,6 @@
 #!/bin/bash
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-# Coverage of the report's 95 % intervals on the constant duct (issue 18): 4 runs of the
+# Coverage of the report's 95 % intervals on the constant duct: 4 runs of the
 # tutorial (seeds 11..14, SWA n = 256, endTime 2.0, tRelax 0.4, a sample every 5e-4 s, 5
 # steps: 3201 samples a cell, tau_int 2.3 to 12 samples, median 4.5).
 #  - single run: the fraction of (cells 3..49) x (M0..M3) x (4 runs) whose interval

@@ -1,6 +1,6 @@
 #!/bin/bash
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-# The random walk (issue 15, dispersionModel) against exact diffusion, no flow, no
+# The random walk (dispersionModel) against exact diffusion, no flow, no
 # coagulation, particles released by initialPopulation (tests/cases/dispersionCases.py says
 # what each case is and checks it):
 #   puff       a puff in a closed 2-D box, rebound walls: each cell against the image-sum

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-"""Cases and checks of the random-walk tests (tests/cases/dispersion.sh, issue 15).
+"""Cases and checks of the random-walk tests (tests/cases/dispersion.sh).
 
   setup CASE KIND       write blockMeshDict, 0/U (and 0/nut) and coagulationProperties of
                         KIND (puff | slab | wellMixed) into a copy of a tutorial

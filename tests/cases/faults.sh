@@ -1,5 +1,5 @@
 #!/bin/bash
-# Faults of a hostile trial (issue 13): each case either runs with closed balances or stops
+# Faults of a hostile trial: each case either runs with closed balances or stops
 # at once with an OpenFOAM fatal error that names the file and the entry; none hangs, none
 # dies of a signal, none exits 0 having lost particles or mass.
 #   faults.sh [name...]   run only the named cases (default: all)

@@ -1,6 +1,6 @@
 #!/bin/bash
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-# Field-driven sources (issue 15 item 5): an inception rate and a Saffman-Turner kernel that
+# Field-driven sources: an inception rate and a Saffman-Turner kernel that
 # differ from cell to cell, read from volScalarFields of the start time. On the duct with
 # U = 0 every cell is a closed box, a process of its own (its own random stream), so
 #   inception  the 'field' inception model, no coagulation (K0 = 1e-30), a rate field that is

@@ -92,7 +92,7 @@ echo "PASS 6 alternating runs of cells on 2 ranks ($procFaces processor faces; p
      "$sent0 by processor0, $sent1 by processor1): balance closed, largest |z| against serial" \
      "$(echo "$zRuns" | awk '{printf "%s%s %s", (NR > 1 ? ", " : ""), $1, $(NF-2)}')"
 
-# Issue 19: the array transport in a decomposed run hands the particles that reach a
+# The array transport in a decomposed run hands the particles that reach a
 # processor patch over in bulk and appends what arrives, so its list is the one Cloud::move
 # leaves: on 2 ranks both paths give the same particles and counts bit for bit. The Couette
 # channel of case_channels (cellPoint velocity, constant-D walk, rebound walls) decomposed

@@ -1,6 +1,6 @@
 #!/bin/bash
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-# Laminar channels without dispersion (issue 15): each streamline is the homogeneous
+# Laminar channels without dispersion: each streamline is the homogeneous
 # constant-kernel solution at residence time x/u(y) (eqs 39-45 with x -> x/u), cell averages
 # within the run's intervals: the Poiseuille parabola with the cell velocity, the Couette
 # line with the cellPoint velocity (exact for a linear field; tests/cases/poiseuilleCase.py

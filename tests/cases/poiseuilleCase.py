@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-"""The laminar channels of tests/cases/poiseuille.sh (issue 15).
+"""The laminar channels of tests/cases/poiseuille.sh.
 
   setup CASE FLOW           blockMeshDict, 0/U of FLOW (poiseuille | couette)
   check CASE FLOW SCHEME    cell averages of M0..M3 against the exact answer, SCHEME cell or

@@ -1,5 +1,5 @@
 #!/bin/bash
-# The size distribution on the constant-kernel duct (issue 18): a sizeDistribution cloud
+# The size distribution on the constant-kernel duct: a sizeDistribution cloud
 # function with integer bins k = 1..30 at three probes and over a cellZone (the last 5
 # cells); its time average matches the exact n_k(t = x/u) of the homogeneous Smoluchowski
 # equation with inception (averaged over the probe's cell, the zone's x range) bin by bin

@@ -1,6 +1,6 @@
 #!/bin/bash
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-# The two splitting schemes against their own exact expectations (issue 20).
+# The two splitting schemes against their own exact expectations.
 #
 # Without coagulation (K0 = 1e-30) every particle keeps its mass, and a split step's
 # inception makes a cohort placed uniformly in its cells that the scheme then displaces by

@@ -1,8 +1,8 @@
 #!/bin/bash
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 # Short cases (a second or two each) for the paths of the OpenFOAM layer that the duct
-# tutorials do not take, each closing a gap that a planted bug went through (issue 21
-# part 2, tests/regression/plantedBugs):
+# tutorials do not take, each closing a gap that a planted bug went through
+# (tests/regression/plantedBugs):
 #   wall       a 3-D duct with wall sides and the flow U = (0 1 0) straight into a wall, pure
 #              inception: the three rows of cells below the wall hold the particles born
 #              below them and carried up (exact expectation, Poisson), and the particles

@@ -77,7 +77,7 @@ sameOnThreads inflow 0.3
 out=$(grep "particles in/incepted/out" "$workDir/threads_inflow_2/log.coagulationFoam" | tail -1 | awk '{print $NF}')
 [ "${out:-0}" -gt 0 ] || fail "inflow: no particle left through the outlet"
 
-# Velocity interpolated to the particle and a random walk (issue 15): the Couette channel of
+# Velocity interpolated to the particle and a random walk: the Couette channel of
 # case_channels with cellPoint velocity and constant-D dispersion (rebound walls); the walk's
 # steps come from per-particle streams, so the threads and Cloud::move agree bit for bit too
 for run in ref 1 2; do

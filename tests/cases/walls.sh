@@ -1,6 +1,6 @@
 #!/bin/bash
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-# Walls that particles stick to (issue 15, patchInteraction): a 2-D box, length L = 0.2,
+# Walls that particles stick to (patchInteraction): a 2-D box, length L = 0.2,
 # height H = 0.04, inception everywhere (no coagulation), a uniform flow (u, -v) with
 # v/u = 0.1 towards the bottom wall. A particle born at (x, y) reaches the bottom before the
 # outlet when y < v (L - x)/u, so at steady state the deposited share of what leaves is the

@@ -486,8 +486,8 @@ TEST(SwaNumberControl, BooksTheMassItChanges)
     // 30 steps, a halving in nearly each: the old particles' weights double at every halving
     // while the incepted ones keep weight 1, and over 200 steps that disparity lets the
     // additive kernel's rate run away (a particle of weight 2^k is every other particle's
-    // partner at a rate ~ 2^k) in 11 of 100 seeds with the streams before the seventh
-    // session's ziggurat and 8 of 100 after it; over 30 steps in none, with 26 or more halvings
+    // partner at a rate ~ 2^k) in about a tenth of the seeds; over 30 steps in none of 100,
+    // with 26 or more halvings
     for (int step = 0; step < 30; ++step) {
         alg->advance(pop, 1e-2, rng, stats);
         const double m = totalMass(pop);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-// The 2-D coagulation-diffusion collocation reference of Sabelfeld-Kolodko §6 (issue 16) against
+// The 2-D coagulation-diffusion collocation reference of Sabelfeld-Kolodko §6 against
 // the discrete Smoluchowski system, the exact constant-kernel solution (no diffusion), the exact
 // diffusion of the square (no coagulation), and its convergence in dx, dt and gamma.
 #include "TestHelpers.hpp"

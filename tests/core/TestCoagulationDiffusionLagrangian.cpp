@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-// The stochastic Lagrangian model of Sabelfeld-Kolodko (issue 16): the table of the normalised
+// The stochastic Lagrangian model of Sabelfeld-Kolodko: the table of the normalised
 // homogeneous problem (18), the trajectories (8)/(16), the direct (15) and adjoint (16)-(17)
 // estimators against the exact Gaussian integral (19)/(23), the effective source (20) against
 // its closed form for uniform data and the bound F_R (22)-(23), and the §7 study (29)-(30).
@@ -242,7 +242,7 @@ TEST(LagrangianDiffusion, DriftAndRotation)
 //- With coagulation and non-uniform data f = 1 + 0.5 x, the Saffman-Turner kernel, r not
 //  uniform (r ~ f): the direct and the adjoint estimator agree, sizes 1..5. One fixed-seed
 //  comparison: at the 95 % interval of the difference it would fail one stream in twenty
-//  (seeds 1800/1801 gave z = 2.5 after the engine change of issue 19; 15 other pairs gave
+//  (seeds 1800/1801 gave z = 2.5 after the engine change; 15 other pairs gave
 //  |z| <= 1.7), so the bound is twice that half-width, 3.9 standard deviations.
 TEST(LagrangianDiffusion, DirectAndAdjointAgreeWithCoagulation)
 {

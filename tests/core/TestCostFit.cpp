@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-// CostFit: the least-squares cost of a cell step that cellWork prints (issue 19)
+// CostFit: the least-squares cost of a cell step that cellWork prints
 #include "TestHelpers.hpp"
 
 #include "coagulation/decomposition/CostFit.hpp"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-// The Lagrangian trajectory methods of Kolodko-Sabelfeld-Wagner §3-5 (issue 17, second part):
+// The Lagrangian trajectory methods of Kolodko-Sabelfeld-Wagner §3-5 (second part):
 // the tabulated normalised homogeneous problem (2.32)/(2.33), the Saffman-Turner constant (5.2),
 // the trajectory integrators (3.2)/(3.6)/(4.1)/(4.2), the point-source (§4.1), adjoint
 // (4.3)/(4.4), direct (3.14) and realisation (4.5) estimators, the functionals (5.5)-(5.8).

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-// Paths that planted bugs went through unnoticed (issue 21): each test below fails on one
+// Paths that planted bugs went through unnoticed: each test below fails on one
 // such one-line bug and is deterministic (fixed seeds, or an exactly constructed state).
 #include "TestHelpers.hpp"
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-// The size distribution of a population sample (issue 18): bins, number densities and the
+// The size distribution of a population sample: bins, number densities and the
 // derived sizes on synthetic populations with known answers; the correlated-sample interval.
 #include "TestHelpers.hpp"
 

@@ -71,7 +71,7 @@ TEST(WorkPartition, OptimalAgainstBruteForce)
     }
 }
 
-//- The duct of issue 19 (the work per cell of the additive duct at n = 8192, last 8 of 50
+//- The duct (the work per cell of the additive duct at n = 8192, last 8 of 50
 //  cells as measured with events counted at half a particle, the rest small): the cumulative
 //  split leaves 59 % on one rank, the optimal one 52 %.
 TEST(WorkPartition, HeavyCellsOfTheDuct)

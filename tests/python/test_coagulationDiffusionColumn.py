@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 """coagulationPost.coagulationDiffusionColumn: the central cells, the densities of sizes,
-the diffusion factor and the comparison table of issue 16's coagulationFoam column."""
+the diffusion factor and the comparison table's coagulationFoam column."""
 
 import math
 

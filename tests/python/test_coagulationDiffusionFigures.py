@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 """coagulationPost.coagulationDiffusionFigures: the misses allowed, the interval checks and
-the third column of issue 16's figures."""
+the third column's figures."""
 
 import pytest
 from scipy.stats import binom

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-"""coagulationPost.statistics on time-correlated samples (issue 18): the integrated
+"""coagulationPost.statistics on time-correlated samples: the integrated
 autocorrelation time of AR(1) series, the coverage of the correlated-sample interval
 (and the under-coverage of the independent-sample one), and the report's columns on a
 synthetic AR(1) case.  Fixed seeds; each test fails when the correction is removed

@@ -3,8 +3,10 @@
 
 What the code does belongs in its comments and the README; which issue asked for it, or in
 which numbered work session it was written, belongs in the git history. This test greps
-README.md, doc/*.md and every source file under src/ and applications/ (C, H, cpp, hpp, c, h,
-py, sh, the Allrun-type scripts and other scripts without an extension that start with #!)
+README.md, CHANGELOG.md, doc/*.md, every source file under src/, applications/, etc/ and
+tests/ (C, H, cpp, hpp, c, h, py, sh, txt, the Allrun-type scripts and other scripts without an
+extension that start with #!; the planted-bug campaigns' record in tests/regression/plantedBugs
+and this file excepted) and every file of the tutorials (scripts and OpenFOAM dictionaries)
 for
 
   - "issue N", "issue #N", "issues N" (any case);
@@ -21,9 +23,12 @@ import re
 import pytest
 
 ROOT = os.path.realpath(os.path.join(os.path.dirname(os.path.realpath(__file__)), "..", ".."))
-SOURCE_DIRS = ("src", "applications")
-SOURCE_EXTENSIONS = (".C", ".H", ".c", ".h", ".cpp", ".hpp", ".py", ".sh")
-SKIP_DIRS = {"__pycache__", ".git", "build", "lnInclude", "Make"}
+SOURCE_DIRS = ("src", "applications", "etc", "tests", "tutorials")
+SOURCE_EXTENSIONS = (".C", ".H", ".c", ".h", ".cpp", ".hpp", ".py", ".sh", ".txt")
+SKIP_DIRS = {"__pycache__", ".git", "build", "lnInclude", "Make", "plantedBugs", "platforms"}
+SKIP_FILES = {"tests/python/test_noIssueNumbers.py"}
+TOP_FILES = ("README.md", "CHANGELOG.md", "Allrun", "Alltest", "Allwmake", "Allwclean",
+             "CMakeLists.txt")
 SOURCE_PREFIXES = tuple(d + "/" for d in SOURCE_DIRS)
 
 ORDINALS = ("first|second|third|fourth|fifth|sixth|seventh|eighth|ninth|tenth|eleventh|twelfth|"
@@ -52,10 +57,9 @@ def is_script(path):
 
 
 def checked_files(root=ROOT):
-    """README.md, doc/*.md and the source files of src/ and applications/ (relative paths)."""
-    files = []
-    if os.path.isfile(os.path.join(root, "README.md")):
-        files.append("README.md")
+    """The top-level documents and scripts, doc/*.md and the files of SOURCE_DIRS (relative
+    paths)."""
+    files = [n for n in TOP_FILES if os.path.isfile(os.path.join(root, n))]
     doc = os.path.join(root, "doc")
     if os.path.isdir(doc):
         files += ["doc/" + n for n in sorted(os.listdir(doc)) if n.endswith(".md")]
@@ -64,8 +68,12 @@ def checked_files(root=ROOT):
             dirnames[:] = sorted(n for n in dirnames if n not in SKIP_DIRS)
             for name in sorted(names):
                 full = os.path.join(dirpath, name)
-                if name.endswith(SOURCE_EXTENSIONS) or name.startswith("All") or is_script(full):
-                    files.append(os.path.relpath(full, root).replace(os.sep, "/"))
+                rel = os.path.relpath(full, root).replace(os.sep, "/")
+                if rel in SKIP_FILES:
+                    continue
+                if (name.endswith(SOURCE_EXTENSIONS) or name.startswith("All") or is_script(full)
+                        or (d == "tutorials" and not name.endswith((".png", ".h5", ".gz")))):
+                    files.append(rel)
     return files
 
 
@@ -125,14 +133,14 @@ def test_files_found():
 
 
 def test_no_history_notes_in_sources():
-    """src/ and applications/."""
+    """src/, applications/, etc/, tests/ and tutorials/."""
     found = hits([f for f in checked_files() if f.startswith(SOURCE_PREFIXES)])
     assert not found, "%d development-history notes (issue or session numbers):\n" % len(found) \
         + "\n".join(found)
 
 
 def test_no_history_notes_in_documentation():
-    """README.md and doc/*.md."""
+    """README.md, CHANGELOG.md, the top-level scripts and doc/*.md."""
     found = hits([f for f in checked_files() if not f.startswith(SOURCE_PREFIXES)])
     assert not found, "%d development-history notes (issue or session numbers):\n" % len(found) \
         + "\n".join(found)

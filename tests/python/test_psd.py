@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-"""The size distribution (issue 18): the exact n_k of analytic.smoluchowski_sizes
+"""The size distribution: the exact n_k of analytic.smoluchowski_sizes
 against closed forms (constant kernel from monomers, Golovin's additive-kernel
 distribution, the duct moments with inception), and coagulationPost.psd on a
 synthetic sample file with known answers (reading, averages, exact reference, checks)."""

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 """coagulationPost.pseudoTurbulencePuff: the cells in a ball, the sums over them and the
-comparison table of issue 17's puff."""
+comparison table's puff."""
 
 import math
 

@@ -154,7 +154,7 @@ def test_attr_value():
 
 def test_cell_order_ignores_round_off_of_the_centres():
     # one column of a 2-D mesh at x = 0.335, its centres' x off by round-off as a decomposed
-    # mesh's are: the rows sort by y, as the serial mesh's do (issue 19: a serial and a
+    # mesh's are: the rows sort by y, as the serial mesh's do (a serial and a
     # decomposed run of the sheared box had 20 rows in a different order)
     centres = [(0.335 + 2e-16, 0.095, 0.005), (0.335, 0.005, 0.005),
                (0.335 - 2e-16, 0.05, 0.005), (0.325, 0.095, 0.005), (0.345, 0.005, 0.005)]

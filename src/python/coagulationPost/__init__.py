@@ -36,19 +36,19 @@ imports none of them; ``coagulationPost.X`` imports module X on first use:
   checks      the acceptance checks of coagulationReport and coagulationTables
   cloud       the coagulationCloud's ASCII particle files of a time folder (cells, fields)
   lagrangianStudy
-              main: figures and summary of build/tests/benchmarks/lagrangianStudy's CSV
+              main: figures and summary of build/applications/studies/lagrangianStudy's CSV
               (Kolodko-Sabelfeld-Wagner §5, tutorials/pseudoTurbulence*)
   coagulationDiffusionFigures
-              main: figures and checks of build/tests/benchmarks/coagulationDiffusionFigures'
-              CSV (Sabelfeld-Kolodko Figs 2-10, issue 16, tutorials/coagulationDiffusion*)
+              main: figures and checks of build/applications/studies/coagulationDiffusionFigures'
+              CSV (Sabelfeld-Kolodko Figs 2-10, tutorials/coagulationDiffusion*)
   coagulationDiffusionColumn
-              main: the coagulationFoam case of issue 16 (setup) and its n_l at x = 0
+              main: the coagulationFoam case (setup) and its n_l at x = 0
               against the Eulerian and Lagrangian references (compare)
   pseudoTurbulencePuff
               main: the coagulationFoam case of a puff in frozen pseudo-turbulence (setup)
-              against the Lagrangian reference (compare; issue 17)
+              against the Lagrangian reference (compare)
   splittingStudy
-              main: tables and plot of tests/benchmarks/splittingStudy.sh's runs (issue 20)
+              main: tables and plot of tests/benchmarks/splittingStudy.sh's runs
 
 Tests: PYTHONPATH=src/python python3 -m pytest tests/python
 """

@@ -200,7 +200,7 @@ def cell_average(kind, lo, hi, I, K0, u=1.0, x_inlet=0.0, nodes=8):
     return avg
 
 
-# ------------------------------------------------------------ size distributions (issue 18)
+# ------------------------------------------------------------ size distributions
 
 def smoluchowski_sizes(kernel, t, K, I=0.0, K0=1.0, n0=None, rtol=1e-10):
     """Number densities n_k(t), k = 1..K, of the homogeneous Smoluchowski equation

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-"""The coagulationFoam column of issue 16 (Sabelfeld-Kolodko, Figs 3-5 setting).
+"""The coagulationFoam column (Sabelfeld-Kolodko, Figs 3-5 setting).
 
     python3 -m coagulationPost.coagulationDiffusionColumn setup CASE N_PER_CELL [NX]
     python3 -m coagulationPost.coagulationDiffusionColumn compare CASE REF.csv [NX TIMES SIZES HALF]
@@ -15,7 +15,7 @@
                             particles in the central cells (centres |x|, |y| < HALF = 0.3: 6 x 6
                             at NX = 80), each with its standard error
                             (sqrt(sum w^2)/V), beside n^E and n^L of the Eulerian reference
-                            (tests/benchmarks/eulerianReference's CSV); n^E and n^L are taken at
+                            (applications/studies/eulerianReference's CSV); n^E and n^L are taken at
                             x = 0 and scaled by the diffusion factor's average over the central
                             square (N^D averaged / N^D at 0, the exact Gaussian integral; the
                             last column, f);

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-"""Plots and summaries of Sabelfeld-Kolodko's Figs 2-10 (issue 16) from the CSV files written by
-build/tests/benchmarks/coagulationDiffusionFigures.
+"""Plots and summaries of Sabelfeld-Kolodko's Figs 2-10 from the CSV files written by
+build/applications/studies/coagulationDiffusionFigures.
 
     python3 -m coagulationPost.coagulationDiffusionFigures fig2      fig2.csv      OUTDIR
         -> Fig2.png

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-"""The particle size distribution of a run (issue 18): the samples the
+"""The particle size distribution of a run: the samples the
 sizeDistribution cloud function writes, their time averages with intervals for
 correlated samples, the exact distribution where one exists, checks and plots.
 

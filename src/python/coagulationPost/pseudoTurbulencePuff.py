@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-"""coagulationFoam in a frozen pseudo-turbulent U (issue 17) against the Lagrangian reference.
+"""coagulationFoam in a frozen pseudo-turbulent U against the Lagrangian reference.
 
     python3 -m coagulationPost.pseudoTurbulencePuff setup CASE N_PER_CELL SEED
                                   write the mesh, zone, U, dictionaries

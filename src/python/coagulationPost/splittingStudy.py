@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-"""Tables and plots of tests/benchmarks/splittingStudy.sh's runs (issue 20).
+"""Tables and plots of tests/benchmarks/splittingStudy.sh's runs.
 
     python3 -m coagulationPost.splittingStudy OUT
 

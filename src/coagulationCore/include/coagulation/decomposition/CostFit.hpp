@@ -8,7 +8,7 @@
 
 namespace coag {
 
-//- The cost of a cell step, fitted (issue 19): least squares of the observed wall seconds t
+//- The cost of a cell step, fitted: least squares of the observed wall seconds t
 //  over three regressors, t = c0 x0 + c1 x1 + c2 x2 (cellWork: x = events, particles, 1 for a
 //  stepped cell), from the normal equations accumulated by add().
 //

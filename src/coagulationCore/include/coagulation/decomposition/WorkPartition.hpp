@@ -14,7 +14,7 @@ namespace coag {
 //
 //  Why not the cumulative-weight split of OpenFOAM's simple/hierarchical decomposition: that
 //  one gives item i to part floor(k * (sum before i) / total), so a heavy item that straddles
-//  a part's share stays with the part it starts in. On the additive duct of issue 19, with
+//  a part's share stays with the part it starts in. On the additive duct, with
 //  events counted at half a particle (the last three of 50 cells holding 12, 17 and 24 % of
 //  the work), it left 59 % on one of 2 ranks where 52 % was possible.
 //
@@ -33,7 +33,7 @@ double largestPart(const std::vector<double>& w, const std::vector<std::size_t>&
 //  returns the part of every item (each part non-empty, k in [1, n]).
 //
 //  Why: a contiguous cut cannot split a heavy item, so the largest share is at least the
-//  heaviest tail it can end with. On the additive duct of issue 19 the last two of 50 cells
+//  heaviest tail it can end with. On the additive duct the last two of 50 cells
 //  hold 27 and 18 % of the work, and no cut of the row into 2 leaves less than 55 % on one
 //  rank; the same cells dealt as 6 runs, 3 to each rank, leave 50.3 %. The price is
 //  processor boundaries: runs - 1 of them along the row instead of k - 1.

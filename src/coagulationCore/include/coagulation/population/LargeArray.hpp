@@ -14,10 +14,8 @@ namespace coag {
 //  (QuantizedSumTree) and the particle records (CellPopulation). From hugePageBytes on they
 //  are 2 MiB aligned and advised to the kernel's transparent huge pages (Linux madvise; a
 //  hint, which THP "madvise" or "always" honours), since a random access to a big array on
-//  4 KiB pages costs a TLB miss (page walk) on top of its cache miss. Measured on the
-//  issue-19 machine (SWA, additive kernel, alternated runs): the tree on huge pages took
-//  about 15 % off an event at N = 1e6, the particle records another 3-14 %. Below it, 64-byte
-//  aligned (a cache line). The price: at most one 2 MiB page of memory more per array.
+//  4 KiB pages costs a TLB miss (page walk) on top of its cache miss (what it saves:
+//  doc/performance.md). Below it, 64-byte aligned (a cache line). The price: at most one 2 MiB page of memory more per array.
 namespace largeArray {
 
 //- From this size in bytes on, huge pages

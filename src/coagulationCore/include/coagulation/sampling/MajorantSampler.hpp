@@ -133,7 +133,7 @@ public:
         proposeWith<false>(u, n, rng, particles, j1, j2);
     }
 
-    //- Draws made ahead (issue 19: software pipelining of the event loop). lookAhead() makes
+    //- Draws made ahead (software pipelining of the event loop). lookAhead() makes
     //  the proposal that propose(u, n, rng, particles) would make now for an rng whose next
     //  words are those of `peek`: the same term, and walks down to their blocks of 8 leaves,
     //  kept. The next proposeAhead(), the same as propose() otherwise, takes their leaves

@@ -16,7 +16,7 @@
 namespace coag {
 
 //- Multi-column sum tree over integer majorants of the values: fan-out 8, one flat, 64-byte
-//  aligned array (issue 19).
+//  aligned array.
 //
 //  Quantisation (the majorant). Column c has a scale 2^e_c; a value v >= 0 is held as the
 //  integer q = ceil(v 2^-e_c) (q = 1 for any v > 0 below the scale), so Q = q 2^e_c >= v.
@@ -78,9 +78,9 @@ public:
     //- reset(nColumns, capacity), stage() of every column of every leaf j < n and
     //  finishBuild(n) in fewer passes, the same tree bit for bit (and the same first bad value
     //  reported): values(j, v) gives leaf j's columns v[0 .. nColumns-1]. The leaves below n
-    //  are written once (not zeroed first), their largest values taken as they are staged.
-    //  (Measured, issue 19: the tree's build was 10-12 % of an SWA event in the benchmark's
-    //  windows of about one event per particle.)
+    //  are written once (not zeroed first), their largest values taken as they are staged:
+    //  the build is a share of an event's cost where a step has about one event per particle
+    //  (doc/performance.md).
     template <class Values>
     void build(std::size_t nColumns, std::size_t capacity, std::size_t n, Values&& values)
     {
@@ -183,8 +183,8 @@ public:
         j2 = n2;
     }
 
-    //- Draws made ahead of time (issue 19's lookahead, MajorantSampler::lookAhead and
-    //  lookTwoAhead). A walk for a random integer predicted before the change that precedes
+    //- Draws made ahead of time (the event loop's software pipelining,
+    //  MajorantSampler::lookAhead and lookTwoAhead). A walk for a random integer predicted before the change that precedes
     //  the real draw is kept as a Draw: the first leaf of its block of 8, where that leaf's
     //  interval [start, start + q) of the column's integers began, and the tree's version
     //  then. drawNear() turns it into the real draw with the walk's last step; the walk's
@@ -196,21 +196,16 @@ public:
     };
 
     //- Whether draws made ahead pay in this tree: it is bigger than 1.25 MiB, well past half
-    //  the L2 cache of a core (measured, SWA additive on the issue-19 machine, 2 MiB of L2 a
-    //  core, the same binary with the threshold lower and at 2 MiB, medians of 4-6 ABBA
-    //  rounds, after the ninth session's draws to the block: 3 % fewer ns per event at
-    //  N = 5e4 (1.4 MB tree) and 7 % at 7e4 (1.9 MB); 2 % more at 4e4 (1.1 MB), 8 % more at
-    //  2e4 and 3e4 (0.55, 0.82 MB), where the walk misses little and the extra instructions
-    //  cost more than they hide; before that change the threshold was 2 MiB)
+    //  the L2 cache of a core. In smaller trees the walk misses little and the extra
+    //  instructions cost more than they hide (the threshold's measurement:
+    //  doc/performance.md).
     bool lookaheadPays() const { return memoryBytes() >= lookaheadBytes; }
 
     //- Whether draws made ahead in two halves (walkToNode(), finishToBlock()) pay more than
     //  in one piece (walk(), walkPair()): the tree is bigger than 6 MiB, its level 1 about
-    //  three quarters of a MiB (measured as lookaheadPays(), ninth session, medians of 6-8
-    //  ABBA rounds: 16 % fewer ns per event at N = 1e6 (27 MB tree), 4 % at 3e5 and 2 % at
-    //  2.5e5 (6.8 MB); 1 % more at 2e5 (5.5 MB), 4 % at 1.5e5 and 1e5, 6 % at 5e4: the
-    //  second half's words and state cost more than they hide while level 1 stays in the L2
-    //  cache). At least 2 levels, so that level 1 exists.
+    //  three quarters of a MiB. While level 1 stays in the L2 cache the second half's words
+    //  and state cost more than they hide (the threshold's measurement: doc/performance.md).
+    //  At least 2 levels, so that level 1 exists.
     bool twoHalvesPay() const { return memoryBytes() >= twoHalvesBytes && levels() >= 2; }
 
     //- The walks of samplePair() for u1 and u2 down to their blocks, kept as Draws: no
@@ -243,7 +238,7 @@ public:
     //  is then (the line now in the cache) and gives the Draw of its block, as walk() would
     //  for u, its lines and the candidates' records prefetched. So neither half waits on a
     //  cache miss: the walk made ahead in one piece waited on level 1 in a tree whose level 1
-    //  is bigger than the L2 cache (measured, issue 19, ninth session). For a tree of at
+    //  is bigger than the L2 cache (doc/performance.md). For a tree of at
     //  least 2 levels (levels()), so that level 1 exists.
     struct Partial {
         std::size_t node = 0;
@@ -306,7 +301,7 @@ public:
     //  walk ends in the leaf whose interval holds u.
     //  (The draws made ahead end at the block, not the leaf: the walk made ahead then loads
     //  no leaf line, which it only prefetches, so that its cache miss does not hold up the
-    //  work after it; measured, issue 19, ninth session.)
+    //  work after it.)
     static constexpr std::size_t maxDrawSteps = 8;
     bool drawNear(std::size_t c, const Draw& d, std::uint64_t u, std::size_t& j) const
     {

@@ -14,7 +14,7 @@
 #include <functional>
 #include <vector>
 
-//- The stochastic Lagrangian model of coagulation with diffusion (Sabelfeld–Kolodko, issue 16):
+//- The stochastic Lagrangian model of coagulation with diffusion (Sabelfeld–Kolodko):
 //  trajectories (8) and (16), the direct (15) and adjoint (16)–(17) Monte Carlo estimators of
 //  I_h(Omega, t) = int_Omega n^L(t, x) h(x) dx for monodisperse data n0_l(x) = delta_1l f(x)
 //  (14), reusing one solve of the normalised homogeneous problem (18), and the effective source

@@ -10,7 +10,7 @@
 #include <cstddef>
 #include <vector>
 
-//- The Eulerian reference of Sabelfeld–Kolodko §6 (issue 16): the 2-D coagulation–diffusion
+//- The Eulerian reference of Sabelfeld–Kolodko §6: the 2-D coagulation–diffusion
 //  equation
 //      dn_l/dt = D Lap n_l + 1/2 sum_{i+j=l} K_ij n_i n_j - n_l sum_{i=1}^{Lambda} K_il n_i,
 //  sizes l = 1..Lambda, v = 0, with a collocation (piecewise-linear) representation in size

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-// The Eulerian coagulation-diffusion reference of Sabelfeld-Kolodko §6 (issue 16, Figs 3-5):
+// The Eulerian coagulation-diffusion reference of Sabelfeld-Kolodko §6 (Figs 3-5):
 // n^E_l(t', 0) for l = 1..20 at t' = 1, 5, 10, K = 1, n0 = 1 on [-R, R]^2 (t' = t K11 n0,
 // x' = x/R), D = 8.88e-2 R^2/T_c by default, and the wall time.
 //

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-// The data of Sabelfeld-Kolodko's Figs 2-10 (issue 16) from the Lagrangian estimators
+// The data of Sabelfeld-Kolodko's Figs 2-10 from the Lagrangian estimators
 // (CoagulationDiffusionLagrangian.hpp) and the Eulerian reference (CoagulationDiffusionReference.hpp).
 //
 //   coagulationDiffusionFigures fig2      [--tmax 10] [--nt 201] [--N 20000] [--seed 1]

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-// The §5 studies of Kolodko, Sabelfeld and Wagner (issue 17): coagulation of monomers released in
+// The §5 studies of Kolodko, Sabelfeld and Wagner: coagulation of monomers released in
 // a ball D of radius R' in Kolmogorov pseudo-turbulence (5.11)-(5.16), with the Saffman-Turner
 // kernel (5.2) through the table of the normalised problem (2.32), against the deterministic
 // case (5.3). Kolmogorov units: x' = x/eta, t' = t/tau_eta, epsilon' = 1, kmax = 2 pi, k0 =
@@ -88,7 +88,7 @@ int main(int argc, char** argv)
     for (int i = 1; i < argc; ++i) {
         std::string k = argv[i];
         if (k == "-h" || k == "--help") {
-            std::cout << "see the comment at the top of tests/benchmarks/lagrangianStudy.cpp\n";
+            std::cout << "see the comment at the top of applications/studies/lagrangianStudy/lagrangianStudy.cpp\n";
             return 0;
         }
         if (k.rfind("--", 0) != 0 || i + 1 >= argc || !a.count(k.substr(2))) {

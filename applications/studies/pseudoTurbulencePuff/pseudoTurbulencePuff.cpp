@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-// The Lagrangian reference of the coagulationFoam puff in frozen pseudo-turbulence (issue 17):
+// The Lagrangian reference of the coagulationFoam puff in frozen pseudo-turbulence:
 // monomers of density S = 1 uniform in the cells of a uniform cube mesh whose centres lie in the
 // ball |x| <= R (what topoSet's sphereToCell selects), Saffman-Turner kernel with K_11 = 1, and
 // the field sample that pseudoTurbulenceField writes for the same (epsilon, eta, L, n0, n, seed).
