@@ -385,7 +385,11 @@ class Sources:
         self.files = {}             # rel path -> stripped text
         self.raw = {}               # rel path -> text with the preprocessor lines kept
         for d in SOURCE_DIRS:
-            for dirpath, _, names in os.walk(os.path.join(root, d)):
+            for dirpath, dirnames, names in os.walk(os.path.join(root, d)):
+                # not the build's links (lnInclude) and objects
+                dirnames[:] = sorted(n for n in dirnames
+                                     if n not in ("lnInclude", "platforms")
+                                     and not n.startswith("linux64"))
                 for name in sorted(names):
                     if name.endswith(SOURCE_EXTENSIONS):
                         full = os.path.join(dirpath, name)
