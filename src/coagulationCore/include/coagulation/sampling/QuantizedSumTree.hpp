@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <memory>
+#include <type_traits>
 #include <vector>
 
 namespace coag {
@@ -87,13 +88,7 @@ public:
         layout(nColumns, capacity);
         double largest[maxColumns] = {};
         bool good = false;
-        switch (ncol_) {
-        case 1: good = stageAll<1>(n, values, largest); break;
-        case 2: good = stageAll<2>(n, values, largest); break;
-        case 3: good = stageAll<3>(n, values, largest); break;
-        case 4: good = stageAll<4>(n, values, largest); break;
-        default: good = stageAll<0>(n, values, largest);
-        }
+        forColumnCount([&](auto nc) { good = stageAll<nc>(n, values, largest); });
         // a value NaN, infinite or negative: finishBuild()'s scan reports the first one
         finishStaged(n, good ? largest : nullptr);
     }
@@ -127,13 +122,7 @@ public:
                 fitScale(c, v);
             }
         }
-        switch (ncol_) {
-        case 1: assignColumns<1>(j, values); break;
-        case 2: assignColumns<2>(j, values); break;
-        case 3: assignColumns<3>(j, values); break;
-        case 4: assignColumns<4>(j, values); break;
-        default: assignColumns<0>(j, values);
-        }
+        forColumnCount([&](auto nc) { assignColumns<nc>(j, values); });
     }
     //- The leaf of `from` copied to `to` in every column (the same integers, no requantising),
     //  and `from` set to zero: a removal by swap.
@@ -183,171 +172,33 @@ public:
         j2 = n2;
     }
 
-    //- Draws made ahead of time (the event loop's software pipelining,
-    //  MajorantSampler::lookAhead and lookTwoAhead). A walk for a random integer predicted before the change that precedes
-    //  the real draw is kept as a Draw: the first leaf of its block of 8, where that leaf's
-    //  interval [start, start + q) of the column's integers began, and the tree's version
-    //  then. drawNear() turns it into the real draw with the walk's last step; the walk's
-    //  cache misses were taken earlier, overlapping other work.
+    //- Draws made ahead of time, for the event loop's software pipelining: the walks of a
+    //  later draw made before the change that precedes it, kept (Draw, Partial) and finished
+    //  exactly as the tree is then. Documented and defined in QuantizedSumTreeDrawsAhead.hpp.
     struct Draw {
         std::size_t leaf = 0;
         std::uint64_t start = 0;
         std::uint64_t version = 0;
     };
-
-    //- Whether draws made ahead pay in this tree: it is bigger than 1.25 MiB, well past half
-    //  the L2 cache of a core. In smaller trees the walk misses little and the extra
-    //  instructions cost more than they hide (the threshold's measurement:
-    //  doc/performance.md).
-    bool lookaheadPays() const { return memoryBytes() >= lookaheadBytes; }
-
-    //- Whether draws made ahead in two halves (walkToNode(), finishToBlock()) pay more than
-    //  in one piece (walk(), walkPair()): the tree is bigger than 6 MiB, its level 1 about
-    //  three quarters of a MiB. While level 1 stays in the L2 cache the second half's words
-    //  and state cost more than they hide (the threshold's measurement: doc/performance.md).
-    //  At least 2 levels, so that level 1 exists.
-    bool twoHalvesPay() const { return memoryBytes() >= twoHalvesBytes && levels() >= 2; }
-
-    //- The walks of samplePair() for u1 and u2 down to their blocks, kept as Draws: no
-    //  children prefetched on the way, the blocks' lines (every column) and their candidates'
-    //  records prefetched at the end, not loaded (the proposal's drawNear() loads them)
-    void walkPair(std::size_t c1, std::uint64_t u1, std::size_t c2, std::uint64_t u2,
-                  const void* leafData, std::size_t leafBytes, Draw& d1, Draw& d2) const
-    {
-        std::uint64_t r1 = u1, r2 = u2;
-        std::size_t n1 = 0, n2 = 0;
-        walks<true, true, 1>(c1, r1, n1, c2, r2, n2, leafData, leafBytes);
-        // the walks subtracted the prefix below their blocks of leaves
-        d1 = Draw{n1 * fanOut, u1 - r1, version_};
-        d2 = Draw{n2 * fanOut, u2 - r2, version_};
-    }
-    //- walkPair() for one walk: sample()'s for u down to its block, kept as a Draw
-    void walk(std::size_t c, std::uint64_t u, const void* leafData, std::size_t leafBytes,
-              Draw& d) const
-    {
-        std::uint64_t r = u;
-        std::size_t node = 0;
-        walks<true, false, 1>(c, r, node, c, r, node, leafData, leafBytes);
-        d = Draw{node * fanOut, u - r, version_};
-    }
-
-    //- Draws made two changes ahead, in two halves (MajorantSampler::lookTwoAhead): the walk
-    //  for u down to a node of level 1 (64 leaves), whose line it prefetches, kept as a
-    //  Partial: the node, where its first leaf's interval began, u and the tree's version;
-    //  then, one change later, finishToBlock() takes the walk's step on level 1 as the tree
-    //  is then (the line now in the cache) and gives the Draw of its block, as walk() would
-    //  for u, its lines and the candidates' records prefetched. So neither half waits on a
-    //  cache miss: the walk made ahead in one piece waited on level 1 in a tree whose level 1
-    //  is bigger than the L2 cache (doc/performance.md). For a tree of at
-    //  least 2 levels (levels()), so that level 1 exists.
     struct Partial {
         std::size_t node = 0;
         std::uint64_t start = 0;
         std::uint64_t u = 0;
         std::uint64_t version = 0;
     };
-    void walkPairToNode(std::size_t c1, std::uint64_t u1, std::size_t c2, std::uint64_t u2,
-                        Partial& p1, Partial& p2) const
-    {
-        std::uint64_t r1 = u1, r2 = u2;
-        std::size_t n1 = 0, n2 = 0;
-        walks<true, true, 2>(c1, r1, n1, c2, r2, n2, nullptr, 0);
-        p1 = Partial{n1, u1 - r1, u1, version_};
-        p2 = Partial{n2, u2 - r2, u2, version_};
-    }
-    void walkToNode(std::size_t c, std::uint64_t u, Partial& p) const
-    {
-        std::uint64_t r = u;
-        std::size_t node = 0;
-        walks<true, false, 2>(c, r, node, c, r, node, nullptr, 0);
-        p = Partial{node, u - r, u, version_};
-    }
-    //- The Draw of p's walk finished to its block, when the tree is as it was at p or changed
-    //  since by one assign() (p's start moved by the change's delta when the changed leaf
-    //  lies before p's node); false otherwise. A u outside the node (the change moved it)
-    //  gives the Draw of the node's last block, still exact for drawNear(), or false where
-    //  the last node of the level has no such block.
-    bool finishToBlock(std::size_t c, const Partial& p, const void* leafData,
-                       std::size_t leafBytes, Draw& d) const
-    {
-        std::uint64_t start = p.start;
-        if (p.version != version_) {
-            if (p.version + 1 != version_) return false;
-            start += lastDelta_[c]
-                     & (std::uint64_t(0) - std::uint64_t(lastLeaf_ < p.node * fanOut * fanOut));
-        }
-        std::uint64_t r = p.u - start;
-        std::size_t node = p.node;
-        switch (ncol_) {
-        case 1: finishStep<1>(c, r, node, leafData, leafBytes); break;
-        case 2: finishStep<2>(c, r, node, leafData, leafBytes); break;
-        case 3: finishStep<3>(c, r, node, leafData, leafBytes); break;
-        case 4: finishStep<4>(c, r, node, leafData, leafBytes); break;
-        default: finishStep<0>(c, r, node, leafData, leafBytes);
-        }
-        if (node * fanOut >= capacity_) return false;  // past the last block
-        d = Draw{node * fanOut, p.u - r, version_};
-        return true;
-    }
-
-    //- sample(c, u) from a Draw d made earlier by walk() or walkPair(), without a walk: true
-    //  and j = the leaf whose interval holds u, when the tree is as it was at d or changed
-    //  since by one assign() and that leaf is in d's block of 8 leaves or at most
-    //  maxDrawSteps intervals from its ends; false (j untouched) otherwise. d's start (where
-    //  the block's first interval began) moves by the change's delta when the changed leaf
-    //  lies before it; the last step of a walk then finds u in the block from its leaves as
-    //  they are now, and a u outside the block steps over the neighbouring intervals. Exact:
-    //  the intervals of the leaves partition {0, ..., total - 1} in the order of j, and a
-    //  walk ends in the leaf whose interval holds u.
-    //  (The draws made ahead end at the block, not the leaf: the walk made ahead then loads
-    //  no leaf line, which it only prefetches, so that its cache miss does not hold up the
-    //  work after it.)
     static constexpr std::size_t maxDrawSteps = 8;
-    bool drawNear(std::size_t c, const Draw& d, std::uint64_t u, std::size_t& j) const
-    {
-        std::uint64_t start = d.start;
-        if (d.version != version_) {
-            if (d.version + 1 != version_) return false;
-            // modulo 2^64: exact; masked, not branched on (the changed leaf lies before the
-            // draw's about half the time, at random: measured, a mispredicted branch a draw)
-            start += lastDelta_[c] & (std::uint64_t(0) - std::uint64_t(lastLeaf_ < d.leaf));
-        }
-        // the walk's last step in d's block; u outside the block (below: r wraps to above
-        // 2^63; above: past the block's sum) ends in its last leaf with r >= that leaf's q
-        std::uint64_t r = u - start;
-        std::size_t k = d.leaf / fanOut;
-        switch (ncol_) {
-        case 1: step<1, false>(0, c, r, k); break;
-        case 2: step<2, false>(0, c, r, k); break;
-        case 3: step<3, false>(0, c, r, k); break;
-        case 4: step<4, false>(0, c, r, k); break;
-        default: step<0, false>(0, c, r, k);
-        }
-        if (r < leaf(k, c)) {
-            j = k;
-            return true;
-        }
-        if (u < start) {
-            k = d.leaf;  // from the block's first interval, to the left
-        } else {
-            start = u - r;  // from its last interval (k), to the right
-        }
-        for (std::size_t steps = 0;; ++steps) {
-            if (u < start) {
-                if (k == 0 || steps == maxDrawSteps) return false;
-                --k;
-                start -= leaf(k, c);
-            } else {
-                const std::uint64_t q = leaf(k, c);
-                if (u - start < q) break;
-                if (k + 1 >= capacity_ || steps == maxDrawSteps) return false;
-                start += q;
-                ++k;
-            }
-        }
-        j = k;
-        return true;
-    }
+    bool lookaheadPays() const;
+    bool twoHalvesPay() const;
+    void walkPair(std::size_t c1, std::uint64_t u1, std::size_t c2, std::uint64_t u2,
+                  const void* leafData, std::size_t leafBytes, Draw& d1, Draw& d2) const;
+    void walk(std::size_t c, std::uint64_t u, const void* leafData, std::size_t leafBytes,
+              Draw& d) const;
+    void walkPairToNode(std::size_t c1, std::uint64_t u1, std::size_t c2, std::uint64_t u2,
+                        Partial& p1, Partial& p2) const;
+    void walkToNode(std::size_t c, std::uint64_t u, Partial& p) const;
+    bool finishToBlock(std::size_t c, const Partial& p, const void* leafData,
+                       std::size_t leafBytes, Draw& d) const;
+    bool drawNear(std::size_t c, const Draw& d, std::uint64_t u, std::size_t& j) const;
 
     //- Hint the cache about the lowest `depth` nodes on the path of leaf j.
     void prefetchPath(std::size_t j, std::size_t depth = 3) const
@@ -397,6 +248,24 @@ private:
         std::uint64_t r = bits - twoTo52Bits + std::uint64_t(big - twoTo52 < t);  // the ceiling
         if (r == 0) r = std::uint64_t(v != 0.0);  // rare: t underflowed (a huge scale, a tiny v)
         return r;
+    }
+
+    //- f(nc) for the tree's column count: nc a std::integral_constant of it for 1 to 4
+    //  columns, so that the steps are compiled with the node block's size a constant (the
+    //  walks, assign() and the build), and of 0 above, where the steps read ncol_
+    template <class F>
+#if defined(__GNUC__)
+    __attribute__((always_inline))
+#endif
+    void forColumnCount(F&& f) const
+    {
+        switch (ncol_) {
+        case 1: f(std::integral_constant<std::size_t, 1>()); break;
+        case 2: f(std::integral_constant<std::size_t, 2>()); break;
+        case 3: f(std::integral_constant<std::size_t, 3>()); break;
+        case 4: f(std::integral_constant<std::size_t, 4>()); break;
+        default: f(std::integral_constant<std::size_t, 0>());
+        }
     }
 
     //- An integer below 2^63 (every leaf, sum and total: at most 2^62) as a double, rounded as
@@ -464,13 +333,9 @@ private:
                std::uint64_t& u2, std::size_t& n2, const void* leafData,
                std::size_t leafBytes) const
     {
-        switch (ncol_) {
-        case 1: walksFor<1, Fetch, Two, Stop>(c1, u1, n1, c2, u2, n2, leafData, leafBytes); break;
-        case 2: walksFor<2, Fetch, Two, Stop>(c1, u1, n1, c2, u2, n2, leafData, leafBytes); break;
-        case 3: walksFor<3, Fetch, Two, Stop>(c1, u1, n1, c2, u2, n2, leafData, leafBytes); break;
-        case 4: walksFor<4, Fetch, Two, Stop>(c1, u1, n1, c2, u2, n2, leafData, leafBytes); break;
-        default: walksFor<0, Fetch, Two, Stop>(c1, u1, n1, c2, u2, n2, leafData, leafBytes);
-        }
+        forColumnCount([&](auto nc) {
+            walksFor<nc, Fetch, Two, Stop>(c1, u1, n1, c2, u2, n2, leafData, leafBytes);
+        });
     }
 
     //- walks() for NC columns (ncol_ when NC is 0). With Fetch: the children of the node on
@@ -686,5 +551,7 @@ private:
 };
 
 } // namespace coag
+
+#include "coagulation/sampling/QuantizedSumTreeDrawsAhead.hpp"
 
 #endif
