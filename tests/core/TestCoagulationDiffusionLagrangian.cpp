@@ -98,12 +98,12 @@ struct Tally {
 TEST(LagrangianDiffusion, HomogeneousTableMatchesExactConstantKernel)
 {
     ConstantKernel K(1.0);
-    HomogeneousTable table(K, 300, 20.0, 20, 400);
+    const HomogeneousTable table = table18(K, 300, 20.0, 20, 400);
     double worstRel = 0.0, worstAbs = 0.0;  // relative where u_l > 1e-4; absolute everywhere
     for (double tau : {0.013, 0.77, 3.3333, 9.99, 19.7})
         for (std::size_t l : {1, 2, 5, 10}) {
             const double ex = exact::constantKernelDensity(1.0, 1.0, tau, l);
-            const double err = std::abs(table.u(l, tau) - ex);
+            const double err = std::abs(table.density(l, tau) - ex);
             worstAbs = std::max(worstAbs, err);
             if (ex > 1e-4) worstRel = std::max(worstRel, err / ex);
         }
@@ -114,12 +114,12 @@ TEST(LagrangianDiffusion, HomogeneousTableMatchesExactConstantKernel)
     // rho(t; delta_1l f) = f u(f t): the exact solution from n0 = f
     std::vector<double> r(table.sizes());
     for (double f : {0.5, 2.0}) {
-        table.rho(f, 4.0, r.data());
+        table.solution(f, 4.0, r.data());
         for (std::size_t l : {1, 3, 7})
             EXPECT_NEAR(r[l - 1] / exact::constantKernelDensity(1.0, f, 4.0, l), 1.0, 1e-7)
                 << "f " << f << " l " << l;
     }
-    EXPECT_THROW(table.u(1, 20.5), std::out_of_range);
+    EXPECT_THROW(table.density(1, 20.5), std::out_of_range);
 }
 
 //- Pure diffusion (no coagulation) and K = 1 with uniform data: I_l = u_l(n0 t) times the
@@ -129,8 +129,8 @@ TEST(LagrangianDiffusion, DirectAndAdjointMatchTheGaussianIntegral)
 {
     ConstantKernel K1(1.0);
     const double n0 = 1.5;
-    HomogeneousTable diffusionOnly(noCoagulation(), 10, 10.0, 1, 10);
-    HomogeneousTable coag(K1, 300, 10.0 * n0, 5, 400);
+    const HomogeneousTable diffusionOnly = table18(noCoagulation(), 10, 10.0, 1, 10);
+    const HomogeneousTable coag = table18(K1, 300, 10.0 * n0, 5, 400);
     DiffusionProcess p;
     p.dim = 2;
     p.D = 0.0888;
@@ -186,7 +186,7 @@ TEST(LagrangianDiffusion, DirectAndAdjointMatchTheGaussianIntegral)
 //  rigid rotation (adjoint at points: n(t, x) is the Gaussian integral at R(-omega t) x).
 TEST(LagrangianDiffusion, DriftAndRotation)
 {
-    HomogeneousTable table(noCoagulation(), 10, 10.0, 1, 10);
+    const HomogeneousTable table = table18(noCoagulation(), 10, 10.0, 1, 10);
     MonodisperseData data;
     data.support = Box::centred(2, 1.0);
     const double v[2] = {0.6, -0.4};
@@ -248,7 +248,7 @@ TEST(LagrangianDiffusion, DirectAndAdjointAgreeWithCoagulation)
 {
     SaffmanTurnerKernel K(1.0 / 8.0);
     const double t = 1.0;
-    HomogeneousTable table(K, 200, 1.5 * t, 5, 200);
+    const HomogeneousTable table = table18(K, 200, 1.5 * t, 5, 200);
     MonodisperseData data;
     data.support = Box::centred(2, 1.0);
     data.f = [](const double* x) { return 1.0 + 0.5 * x[0]; };
@@ -284,7 +284,7 @@ TEST(LagrangianDiffusion, NoDiffusionIsTheHomogeneousSolution)
 {
     SaffmanTurnerKernel K(1.0 / 8.0);
     const double t = 2.0;
-    HomogeneousTable table(K, 200, 2.0 * t, 10, 200);
+    const HomogeneousTable table = table18(K, 200, 2.0 * t, 10, 200);
     MonodisperseData data;
     data.support = Box::centred(2, 1.0);
     data.f = [](const double* x) { return 1.5 + 0.5 * x[0]; };
@@ -323,7 +323,7 @@ TEST(LagrangianDiffusion, NoDiffusionIsTheHomogeneousSolution)
 //  intervals that contain the exact value is binomial(200, 0.95): 190 +- 3.1; accept 178..198.
 TEST(LagrangianDiffusion, IntervalsCoverAtTheirLevel)
 {
-    HomogeneousTable table(noCoagulation(), 10, 10.0, 1, 10);
+    const HomogeneousTable table = table18(noCoagulation(), 10, 10.0, 1, 10);
     MonodisperseData data;
     data.support = Box::centred(2, 1.0);
     DiffusionProcess p;
@@ -346,7 +346,7 @@ TEST(LagrangianDiffusion, EffectiveSourceClosedFormAndBound)
 {
     ConstantKernel K(1.0);
     const double n0 = 1.0;
-    HomogeneousTable table(K, 300, 10.0, 20, 400);
+    const HomogeneousTable table = table18(K, 300, 10.0, 20, 400);
     const double C = kernelBoundConstant(K, 100);
     EXPECT_DOUBLE_EQ(C, 1.0);
     Tally tally;
@@ -363,7 +363,7 @@ TEST(LagrangianDiffusion, EffectiveSourceClosedFormAndBound)
                 const double x[3] = {x0, 0.0, 0.0};
                 const double P = gaussianBoxMass(dim, 1.0, p.D, t, x);
                 std::vector<double> u(table.sizes());
-                table.rho(n0, t, u.data());
+                table.solution(n0, t, u.data());
                 double S = 0.0;
                 for (std::size_t i = 0; i < u.size(); ++i)
                     for (std::size_t j = 0; j < u.size(); ++j)
@@ -416,7 +416,7 @@ TEST(LagrangianDiffusion, BoundAgainstQuadrature)
 TEST(LagrangianDiffusion, TurbulentStudySection7)
 {
     const double tp = 1.0;
-    HomogeneousTable diffusionOnly(noCoagulation(), 10, 10.0, 1, 10);
+    const HomogeneousTable diffusionOnly = table18(noCoagulation(), 10, 10.0, 1, 10);
     DiffusionProcess p;
     p.dim = 2;
     p.D = 1.0;
@@ -432,8 +432,8 @@ TEST(LagrangianDiffusion, TurbulentStudySection7)
         tally.check(eD, 1, ND);
         for (double b : {0.01, 0.1, 1.0}) {
             SaffmanTurnerKernel K(b / 8.0);
-            HomogeneousTable table(K, 200, tp, 1, 100);
-            const double NCD = table.u(1, tp) * ND;  // (30)
+            const HomogeneousTable table = table18(K, 200, tp, 1, 100);
+            const double NCD = table.density(1, tp) * ND;  // (30)
             const Estimate e =
                 LagrangianEstimator(table, p, data).adjointPoint(tp, x.data(), 40000, ++seed);
             const double rel = (ND - NCD) / NCD;
@@ -465,7 +465,7 @@ TEST(LagrangianDiffusion, TurbulentStudySection7)
 //  mu (v* = v, weight 1) must not.
 TEST(LagrangianDiffusion, CompressibleDriftNeedsMu)
 {
-    HomogeneousTable table(noCoagulation(), 10, 10.0, 1, 10);
+    const HomogeneousTable table = table18(noCoagulation(), 10, 10.0, 1, 10);
     const double a = 1.0, D = 0.1, t = 1.0;
     MonodisperseData data;
     data.support = box2(-1.0, 0.5, -0.5, 1.0);

@@ -81,7 +81,7 @@ TEST(Lagrangian, TableMatchesConstantKernelExactSolution)
     ConstantKernel k(3.0);
     double err20 = 0.0, err10 = 0.0;
     for (std::size_t M : {20u, 40u}) {
-        const auto t = NormalisedSmoluchowskiTable::fromOde(k, 4.0, 128, M);
+        const auto t = HomogeneousTable::fromOde(k, 4.0, 128, M);
         EXPECT_LT(std::abs(t.lostMass()), 1e-12);
         double e = 0.0;
         for (int i = 0; i < 40; ++i) {
@@ -97,7 +97,7 @@ TEST(Lagrangian, TableMatchesConstantKernelExactSolution)
                 "ratio %.1f (cubic Hermite: 16)\n", err10, err20, err10 / err20);
     EXPECT_LT(err20, 5e-6);
     EXPECT_GT(err10 / err20, 10.0);   // fourth order between nodes
-    const auto t = NormalisedSmoluchowskiTable::fromOde(k, 4.0, 128, 10);
+    const auto t = HomogeneousTable::fromOde(k, 4.0, 128, 10);
     EXPECT_THROW(t.density(1, 4.01), std::out_of_range);
 }
 
@@ -106,7 +106,7 @@ TEST(Lagrangian, TableScalingRelation)
     // (2.33): n_l(t) = n f_l(n K_11 t) for the unnormalised Saffman-Turner kernel (5.2)
     const double K0 = 0.37, n = 2.5, time = 0.6;
     SaffmanTurnerKernel k(K0);
-    const auto table = NormalisedSmoluchowskiTable::fromOde(k, n * 8.0 * K0 * time, 64, 40);
+    const auto table = HomogeneousTable::fromOde(k, n * 8.0 * K0 * time, 64, 40);
     DiscreteSmoluchowski ode(k, 64);
     ode.setTolerances(1e-11, 1e-15);
     Eigen::VectorXd n0 = Eigen::VectorXd::Zero(64);
@@ -125,11 +125,11 @@ TEST(Lagrangian, TableFromNanbuMethod)
     // Nanbu method converges to the finite-difference scheme (2.27), O(alpha) from the ODE.
     ConstantKernel k(2.0);
     const double alpha = 0.02, s = 0.8;
-    const auto ode = NormalisedSmoluchowskiTable::fromOde(k, 1.0, 64, 20);
+    const auto ode = HomogeneousTable::fromOde(k, 1.0, 64, 20);
     const int R = 6;
     std::vector<RunningStatistics> st(3);
     for (int r = 0; r < R; ++r) {
-        const auto nb = NormalisedSmoluchowskiTable::fromNanbu(k, 1.0, 64, 20000, alpha, seedFor(17, r));
+        const auto nb = HomogeneousTable::fromNanbu(k, 1.0, 64, 20000, alpha, seedFor(17, r));
         EXPECT_FALSE(nb.hermite());
         for (std::size_t l = 1; l <= 3; ++l) st[l - 1].add(nb.density(l, s));
     }
@@ -215,7 +215,7 @@ TEST(Lagrangian, ZeroVelocityReproducesHomogeneousSolution)
     // v = 0: every estimator gives the homogeneous solution from the local source (5.3)
     SaffmanTurnerKernel k(1.0 / 8.0);   // K_11 = 1
     const double rate = 0.7, t = 1.5;   // S K_11 = 0.7
-    const auto table = NormalisedSmoluchowskiTable::fromOde(k, rate * t, 64, 40);
+    const auto table = HomogeneousTable::fromOde(k, rate * t, 64, 40);
     InitialSource src{InitialSource::Profile::Linear, Sphere{{{1.0, 2.0, 3.0}}, 10.0}};
     LagrangianSolution sol(table, src, rate, 8);
     const VelocityField zero = uniformVelocity(0.0, 0.0, 0.0);
@@ -262,7 +262,7 @@ TEST(Lagrangian, UniformTranslationShiftsExactly)
 {
     SaffmanTurnerKernel k(1.0 / 8.0);
     const double rate = 0.5, t = 2.0, c[3] = {1.5, -0.5, 0.25};
-    const auto table = NormalisedSmoluchowskiTable::fromOde(k, rate * t, 32, 20);
+    const auto table = HomogeneousTable::fromOde(k, rate * t, 32, 20);
     InitialSource src{InitialSource::Profile::Linear, Sphere{{{0.0, 0.0, 0.0}}, 5.0}};
     LagrangianSolution sol(table, src, rate, 6);
     const VelocityField v = uniformVelocity(c[0], c[1], c[2]);
@@ -298,7 +298,7 @@ TEST(Lagrangian, DirectAndAdjointAgreeInPseudoTurbulence)
     // one frozen field sample; the integral over a ball that D's image only partly covers
     SaffmanTurnerKernel k(1.0 / 8.0);
     const double rate = 0.2, t = 2.0;
-    const auto table = NormalisedSmoluchowskiTable::fromOde(k, rate * t, 32, 20);
+    const auto table = HomogeneousTable::fromOde(k, rate * t, 32, 20);
     InitialSource src{InitialSource::Profile::Linear, Sphere{{{0.0, 0.0, 0.0}}, 10.0}};
     LagrangianSolution sol(table, src, rate, 4);
     PseudoTurbulence field(kolmogorovUnits(100.0), 99);
@@ -372,7 +372,7 @@ StudyResult paperStudy(InitialSource::Profile profile, double r, int R, std::siz
 {
     static SaffmanTurnerKernel k(1.0 / 8.0);
     const double beta = 0.0039, t = 1.25;
-    static const auto table = NormalisedSmoluchowskiTable::fromOde(k, beta * 55.0, 64, 200);
+    static const auto table = HomogeneousTable::fromOde(k, beta * 55.0, 64, 200);
     InitialSource src{profile, Sphere{{{0.0, 0.0, 0.0}}, 100.0}};
     LagrangianSolution sol(table, src, beta, 12);
     ExpectationFunctionals st;   // the paper's <Sp> = <In_l>/<In>, <Ms> = <mass>/<In>
@@ -394,7 +394,7 @@ TEST(Lagrangian, UniformSourceMeanSizeAndSpectrumUnchanged)
                 s.mean.In, s.hw.In, s.det.In, s.mean.Ms, s.hw.Ms, s.det.Ms);
     // after (5.20): Ms = sum_i i f_i(beta t') / sum_i f_i(beta t'), Sp_l = f_l(beta t') / sum_i f_i
     static SaffmanTurnerKernel k(1.0 / 8.0);
-    const auto table = NormalisedSmoluchowskiTable::fromOde(k, 0.0039 * 55.0, 64, 200);   // as paperStudy
+    const auto table = HomogeneousTable::fromOde(k, 0.0039 * 55.0, 64, 200);   // as paperStudy
     const double s1 = 0.0039 * 1.25, msPaper = table.mass(s1) / table.total(s1);
     EXPECT_NEAR(s.det.Ms, msPaper, 1e-9);
     EXPECT_NEAR(s.mean.Ms, msPaper, s.hw.Ms + 1e-9);

@@ -54,7 +54,7 @@ int fig2(const Args& a)
     const std::uint64_t seed = static_cast<std::uint64_t>(a.get("seed", 1));
     coag::ConstantKernel K(1.0);
     const auto t0 = Clock::now();
-    coag::HomogeneousTable table(K, 300, tmax, 20, 400);
+    const coag::HomogeneousTable table = coag::table18(K, 300, tmax, 20, 400);
     const double C = coag::kernelBoundConstant(K, 100);
     const double x[2] = {0.0, 0.0};
     std::printf("D,t,FR,F,F_hw\n");
@@ -94,7 +94,7 @@ int figs3to8(const Args& a)
     for (int k = 1; k < nt; ++k) times.push_back(tmax * k / (nt - 1));
     // Lagrangian: one table of (18), the adjoint point estimator at each time
     const auto tl = Clock::now();
-    coag::HomogeneousTable table(K, 400, tmax, sizes, 400);
+    const coag::HomogeneousTable table = coag::table18(K, 400, tmax, sizes, 400);
     coag::DiffusionProcess p;
     p.dim = 2;
     p.D = D;
@@ -129,7 +129,7 @@ int figs3to8(const Args& a)
     for (std::size_t k = 0; k < times.size(); ++k)
         for (std::size_t l = 1; l <= sizes; ++l) {
             const double exact =
-                table.u(l, times[k]) * coag::exact::diffusedSquare(1.0, 1.0, D, times[k], 0, 0);
+                table.density(l, times[k]) * coag::exact::diffusedSquare(1.0, 1.0, D, times[k], 0, 0);
             std::printf("%.6g,%zu,%.8g,%.3g,%.8g,", times[k], l, nL[k].mean[l - 1],
                         nL[k].halfWidth[l - 1], exact);
             if (nE[k].empty()) std::printf("\n");
@@ -151,7 +151,7 @@ int figs9to10(const Args& a)
     const std::uint64_t seed = static_cast<std::uint64_t>(a.get("seed", 1));
     const auto t0 = Clock::now();
     coag::ConstantKernel none(1e-12);  // "no coagulation": u_1 = 1 to 1e-11
-    coag::HomogeneousTable diffusionOnly(none, 10, tmax, 1, 10);
+    const coag::HomogeneousTable diffusionOnly = coag::table18(none, 10, tmax, 1, 10);
     coag::DiffusionProcess p;
     p.dim = 2;
     p.D = 1.0;  // t' = t/T_D, x' = x/R
@@ -163,12 +163,12 @@ int figs9to10(const Args& a)
         const double x[2] = {xp, 0.0};
         for (double b : {0.01, 0.1, 1.0}) {
             coag::SaffmanTurnerKernel K(b / 8.0);  // K_ij = b (i^1/3 + j^1/3)^3 / 8 in T_D units
-            coag::HomogeneousTable table(K, 200, tmax, 1, 400);
+            const coag::HomogeneousTable table = coag::table18(K, 200, tmax, 1, 400);
             coag::LagrangianEstimator eCD(table, p, data), eD(diffusionOnly, p, data);
             for (int k = 1; k < nt; ++k) {
                 const double t = tmax * k / (nt - 1);
                 const double ND = coag::exact::diffusedSquare(1.0, 1.0, 1.0, t, xp, 0.0);  // (29)
-                const double NCD = table.u(1, t) * ND;                                      // (30)
+                const double NCD = table.density(1, t) * ND;  // (30)
                 // independent paths for every estimate (N^D is estimated anew for each b)
                 const coag::Estimate d = eD.adjointPoint(t, x, N, seed * 1000003 + stream++);
                 const coag::Estimate c = eCD.adjointPoint(t, x, N, seed * 1000003 + stream++);

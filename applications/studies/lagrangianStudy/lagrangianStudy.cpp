@@ -147,7 +147,7 @@ int main(int argc, char** argv)
         SaffmanTurnerKernel kernel(1.0 / 8.0);   // normalised: k_11 = 1 (2.32)
         const auto t0 = std::chrono::steady_clock::now();
         const std::size_t L = std::max<std::size_t>(64, nSizes);
-        const auto table = NormalisedSmoluchowskiTable::fromOde(kernel, beta * tMax, L, 400);
+        const auto table = HomogeneousTable::fromOde(kernel, beta * tMax, L, 400);
         const double tableSeconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         InitialSource src{linear ? InitialSource::Profile::Linear : InitialSource::Profile::Uniform,

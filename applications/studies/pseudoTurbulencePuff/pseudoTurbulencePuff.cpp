@@ -62,7 +62,7 @@ int main(int argc, char** argv)
     };
 
     SaffmanTurnerKernel kernel(1.0 / 8.0);
-    const auto table = NormalisedSmoluchowskiTable::fromOde(kernel, rate * T, 128, 200);
+    const auto table = HomogeneousTable::fromOde(kernel, rate * T, 128, 200);
     InitialSource src{InitialSource::Profile::Uniform, Sphere{{{0.0, 0.0, 0.0}}, R + h}};
     LagrangianSolution sol(table, src, rate, 1);
     Score sc;

@@ -102,66 +102,16 @@ double NormalSource::normal()
 
 // ---- the table of (18) ------------------------------------------------------------------------
 
-HomogeneousTable::HomogeneousTable(const CoagulationKernel& kernel, std::size_t maxSize,
-                                   double tauMax, std::size_t storedSizes,
-                                   std::size_t intervals)
-    : nOut_(storedSizes), tauMax_(tauMax)
+HomogeneousTable table18(const CoagulationKernel& kernel, std::size_t maxSize, double tauMax,
+                         std::size_t storedSizes, std::size_t intervals)
 {
     if (storedSizes == 0 || storedSizes > maxSize)
-        throw std::invalid_argument("HomogeneousTable: need 1 <= storedSizes <= maxSize");
-    if (!(tauMax > 0.0) || intervals == 0)
-        throw std::invalid_argument("HomogeneousTable: need tauMax > 0 and intervals > 0");
-    n_ = intervals;
-    DiscreteSmoluchowski ode(kernel, maxSize);
-    K_ = ode.kernelMatrix().topLeftCorner(nOut_, nOut_);
-    U_.resize(intervals + 1, nOut_);
-    dU_.resize(intervals + 1, nOut_);
-    Eigen::VectorXd u = Eigen::VectorXd::Zero(maxSize);
-    u(0) = 1.0;  // u_l(0) = delta_1l (18)
-    for (std::size_t k = 0; k <= intervals; ++k) {
-        if (k > 0) u = ode.integrate(u, node(k - 1), node(k));  // du/dtau = K(u) (18)
-        const Eigen::VectorXd du = ode.rhs(u);
-        U_.row(k) = u.head(nOut_).transpose();
-        dU_.row(k) = du.head(nOut_).transpose();
-    }
-}
-
-void HomogeneousTable::evaluate(double tau, double* u) const
-{
-    if (!(tau >= 0.0) || tau > tauMax_ * (1.0 + 1e-12))
-        throw std::out_of_range("HomogeneousTable: tau " + std::to_string(tau) +
-                                " outside [0, " + std::to_string(tauMax_) + "]");
-    // graded nodes tau_k = tauMax (k/n)^2: k = floor(n sqrt(tau/tauMax))
-    std::size_t k = std::min(static_cast<std::size_t>(n_ * std::sqrt(tau / tauMax_)), n_ - 1);
-    while (k > 0 && node(k) > tau) --k;  // rounding
-    while (k + 1 < n_ && node(k + 1) < tau) ++k;
-    const double h = node(k + 1) - node(k);
-    const double s = std::min(std::max((tau - node(k)) / h, 0.0), 1.0);
-    // cubic Hermite basis on [tau_k, tau_k+1]
-    const double s2 = s * s, s3 = s2 * s;
-    const double h00 = 2 * s3 - 3 * s2 + 1, h10 = s3 - 2 * s2 + s;
-    const double h01 = -2 * s3 + 3 * s2, h11 = s3 - s2;
-    for (std::size_t l = 0; l < nOut_; ++l)  // u >= 0: the cubic can dip below near tau = 0
-        u[l] = std::max(0.0, h00 * U_(k, l) + h10 * h * dU_(k, l) + h01 * U_(k + 1, l) +
-                                 h11 * h * dU_(k + 1, l));
-}
-
-double HomogeneousTable::u(std::size_t l, double tau) const
-{
-    if (l == 0 || l > nOut_) throw std::out_of_range("HomogeneousTable: size not stored");
-    std::vector<double> v(nOut_);
-    evaluate(tau, v.data());
-    return v[l - 1];
-}
-
-void HomogeneousTable::rho(double f, double t, double* out) const
-{
-    if (f <= 0.0) {
-        std::fill(out, out + nOut_, 0.0);
-        return;
-    }
-    evaluate(f * t, out);  // rho(t; delta_1l f) = f u(f t) (after (18))
-    for (std::size_t l = 0; l < nOut_; ++l) out[l] *= f;
+        throw std::invalid_argument("table18: need 1 <= storedSizes <= maxSize");
+    HomogeneousTable::Options o;
+    o.scaling = HomogeneousTable::Scaling::kernel;   // du/dtau = K(u) (18)
+    o.mesh = HomogeneousTable::Mesh::graded;
+    o.storedSizes = storedSizes;
+    return HomogeneousTable::fromOde(kernel, tauMax, maxSize, intervals, o);
 }
 
 // ---- trajectories (8), (16) ------------------------------------------------------------------
@@ -261,7 +211,7 @@ LagrangianEstimator::LagrangianEstimator(const HomogeneousTable& table,
 void LagrangianEstimator::scoreRho(double f, double t, double weight,
                                    std::vector<double>& buf) const
 {
-    table_.rho(f, t, buf.data());
+    table_.solution(f, t, buf.data());
     for (double& b : buf) b *= weight;
 }
 
@@ -377,7 +327,7 @@ EffectiveSource LagrangianEstimator::effectiveSource(double t, const double* x, 
     for (std::size_t b = 0; b < B; ++b) {
         for (std::size_t k = 0; k < nb; ++k) {
             for (int i = 0; i < d; ++i) xi[i] = x[i] + sigma * g.normal();  // xi ~ N(x, 2Dt) (20)
-            table_.rho(data_.value(xi), t, buf.data());
+            table_.solution(data_.value(xi), t, buf.data());
             for (std::size_t l = 0; l < L; ++l) R(k, l) = buf[l];
         }
         const Eigen::RowVectorXd m = R.colwise().mean();

@@ -80,7 +80,7 @@ double InitialSource::value(const double x[3]) const
     return profile == Profile::Uniform ? 1.0 : 1.0 - r / D.radius;   // (5.4)
 }
 
-LagrangianSolution::LagrangianSolution(const NormalisedSmoluchowskiTable& table,
+LagrangianSolution::LagrangianSolution(const HomogeneousTable& table,
                                        const InitialSource& source, double rate,
                                        std::size_t nSizes)
     : table_(table), source_(source), rate_(rate), nSizes_(nSizes)
@@ -177,7 +177,7 @@ std::vector<IntegralEstimate> directIntegrals(const VelocityField& v, const Traj
 }
 
 std::vector<PointSourceSample> pointSource(const VelocityField& v, const TrajectoryOptions& o,
-                                           const NormalisedSmoluchowskiTable& table, double rate,
+                                           const HomogeneousTable& table, double rate,
                                            std::size_t nSizes, const double xStar[3], double T,
                                            const std::function<double(double)>& SP)
 {

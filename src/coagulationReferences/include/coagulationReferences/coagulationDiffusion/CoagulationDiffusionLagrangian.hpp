@@ -5,6 +5,7 @@
 
 #include "coagulation/kernels/CoagulationKernel.hpp"
 #include "coagulation/random/Rng.hpp"
+#include "coagulationReferences/smoluchowski/HomogeneousTable.hpp"
 
 #include <Eigen/Dense>
 
@@ -50,42 +51,14 @@ private:
     double spare_ = 0.0;
 };
 
-//- u(tau) of the normalised homogeneous problem (18), du/dtau = K(u), u_l(0) = delta_1l,
-//  solved ONCE on [0, tauMax] (DiscreteSmoluchowski, sizes 1..maxSize, clusters beyond lost)
-//  and tabulated with u and du/dtau at the graded times tau_k = tauMax (k/intervals)^2,
-//  k = 0..intervals; u_l(tau) between two entries is the cubic Hermite interpolant (error
-//  O(h^4), cut at 0 from below). The grading resolves the start, where u_l ~ tau^(l-1) is no
-//  cubic (the first interval is tauMax/intervals^2 long). With monodisperse data
-//  n0_l = delta_1l f, the homogeneous solution from n0 is rho_l(t; n0) = f u_l(f t) (README,
-//  after (18)). Sizes 1..storedSizes are kept (storedSizes <= maxSize).
-class HomogeneousTable {
-public:
-    HomogeneousTable(const CoagulationKernel& kernel, std::size_t maxSize, double tauMax,
-                     std::size_t storedSizes, std::size_t intervals = 1000);
-
-    std::size_t sizes() const { return nOut_; }
-    double tauMax() const { return tauMax_; }
-    //- u_l(tau), l = 1..sizes() into u[0..sizes()); throws std::out_of_range for tau outside
-    //  [0, tauMax].
-    void evaluate(double tau, double* u) const;
-    double u(std::size_t l, double tau) const;
-    //- rho_l(t; delta_1l f) = f u_l(f t), l = 1..sizes() (f >= 0; 0 for f = 0).
-    void rho(double f, double t, double* out) const;
-    //- K_ij, i, j = 1..sizes() (for F (20)).
-    const Eigen::MatrixXd& kernelMatrix() const { return K_; }
-
-private:
-    std::size_t nOut_;
-    double tauMax_;
-    std::size_t n_;
-    double node(std::size_t k) const
-    {
-        const double r = static_cast<double>(k) / static_cast<double>(n_);
-        return tauMax_ * r * r;
-    }
-    Eigen::MatrixXd U_, dU_;  // (entry, size)
-    Eigen::MatrixXd K_;
-};
+//- The table of u(tau) of the normalised homogeneous problem (18), du/dtau = K(u),
+//  u_l(0) = delta_1l, solved ONCE on [0, tauMax] (sizes 1..maxSize, clusters beyond lost) and
+//  kept for sizes 1..storedSizes on the graded mesh tau_k = tauMax (k/intervals)^2: the
+//  kernel scaling of the one HomogeneousTable (smoluchowski/HomogeneousTable.hpp). With
+//  monodisperse data n0_l = delta_1l f, the homogeneous solution from n0 is
+//  rho_l(t; n0) = f u_l(f t) (after (18)): HomogeneousTable::solution(f, t, out).
+HomogeneousTable table18(const CoagulationKernel& kernel, std::size_t maxSize, double tauMax,
+                         std::size_t storedSizes, std::size_t intervals = 1000);
 
 //- The diffusion process (8) dX = v(t, X) dt + sqrt(2D) dW in dim dimensions. v empty: v = 0,
 //  and every path is one exact Gaussian step (variance 2 D t per coordinate, (19)). Otherwise

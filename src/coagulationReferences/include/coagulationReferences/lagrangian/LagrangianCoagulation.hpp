@@ -57,19 +57,19 @@ struct Score {
 //- The homogeneous solution Phi(S^I(x0); t) of (3.7), (4.4) read from the table.
 class LagrangianSolution {
 public:
-    LagrangianSolution(const NormalisedSmoluchowskiTable& table, const InitialSource& source,
+    LagrangianSolution(const HomogeneousTable& table, const InitialSource& source,
                        double rate, std::size_t nSizes);
     const InitialSource& source() const { return source_; }
     std::size_t nSizes() const { return nSizes_; }
     double rate() const { return rate_; }
-    const NormalisedSmoluchowskiTable& table() const { return table_; }
+    const HomogeneousTable& table() const { return table_; }
     //- n(t) started from n_1 = s0, n_l = 0 (l >= 2): s0 f_l(s0 * rate * t)   (2.33), (4.4)
     void homogeneous(double s0, double t, Score& out) const;
     //- the same with s0 = S^I(x0)
     void fromOrigin(const double x0[3], double t, Score& out) const;
 
 private:
-    const NormalisedSmoluchowskiTable& table_;
+    const HomogeneousTable& table_;
     InitialSource source_;
     double rate_;
     std::size_t nSizes_;
@@ -117,7 +117,7 @@ struct PointSourceSample {
     Score n;
 };
 std::vector<PointSourceSample> pointSource(const VelocityField& v, const TrajectoryOptions& o,
-                                           const NormalisedSmoluchowskiTable& table, double rate,
+                                           const HomogeneousTable& table, double rate,
                                            std::size_t nSizes, const double xStar[3], double T,
                                            const std::function<double(double)>& SP);
 
