@@ -12,7 +12,6 @@
 namespace Foam
 {
     defineTypeNameAndDebug(cloudFunction, 0);
-    defineRunTimeSelectionTable(cloudFunction, cloud);
     defineRunTimeSelectionTable(cloudFunction, dictionary);
 }
 
@@ -26,28 +25,6 @@ Foam::cloudFunction::cloudFunction(coagulationCloud& cloud)
 
 
 // * * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
-
-Foam::autoPtr<Foam::cloudFunction> Foam::cloudFunction::New
-(
-    const word& functionType,
-    coagulationCloud& cloud
-)
-{
-    auto cstrIter = cloudConstructorTablePtr_->cfind(functionType);
-
-    if (!cstrIter.found())
-    {
-        FatalErrorInLookup
-        (
-            "cloudFunction",
-            functionType,
-            *cloudConstructorTablePtr_
-        ) << exit(FatalError);
-    }
-
-    return autoPtr<cloudFunction>(cstrIter()(cloud));
-}
-
 
 Foam::autoPtr<Foam::cloudFunction> Foam::cloudFunction::New
 (

@@ -9,7 +9,6 @@
 #include "IFstream.H"
 #include "OFstream.H"
 #include "coagulationCloud.H"
-#include "addToRunTimeSelectionTable.H"
 #include "processorPolyPatch.H"
 #include "OSspecific.H"
 
@@ -18,7 +17,6 @@ namespace Foam
 namespace cloudFunctions
 {
     defineTypeNameAndDebug(massBalance, 0);
-    addToRunTimeSelectionTable(cloudFunction, massBalance, cloud);
 }
 }
 

@@ -8,14 +8,12 @@
 #include "momentFields.H"
 #include "coagulationCloud.H"
 #include "zeroGradientFvPatchFields.H"
-#include "addToRunTimeSelectionTable.H"
 
 namespace Foam
 {
 namespace cloudFunctions
 {
     defineTypeNameAndDebug(momentFields, 0);
-    addToRunTimeSelectionTable(cloudFunction, momentFields, cloud);
 }
 }
 

@@ -7,7 +7,6 @@
 
 #include "momentSampler.H"
 #include "coagulationCloud.H"
-#include "addToRunTimeSelectionTable.H"
 #include "fvMesh.H"
 #include "OSspecific.H"
 #include "caseChecks.H"
@@ -17,7 +16,6 @@ namespace Foam
 namespace cloudFunctions
 {
     defineTypeNameAndDebug(momentSampler, 0);
-    addToRunTimeSelectionTable(cloudFunction, momentSampler, cloud);
 }
 }
 

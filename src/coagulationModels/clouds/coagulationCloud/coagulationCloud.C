@@ -7,8 +7,6 @@
 
 #include "coagulationCloud.H"
 #include "caseChecks.H"
-#include "momentFields.H"
-#include "massBalance.H"
 
 #include <cstdlib>
 
@@ -92,6 +90,9 @@ Foam::coagulationCloud::coagulationCloud
     patchInteraction_(),
     events_(),
     removedInCells_(0),
+    momentFields_(),
+    momentSampler_(),
+    massBalance_(),
     functions_(),
     memoryLimit_(0),
     pendingWrite_()
@@ -206,13 +207,14 @@ Foam::coagulationCloud::coagulationCloud
     // Checked before anything is written
     checkFlow(U);
 
-    for (const char* f : {"momentFields", "momentSampler", "massBalance"})
-    {
-        functions_.append(cloudFunction::New(f, *this));
-    }
+    // The functions of every run, on the particles of the start (the
+    // balances count these as the initial population)
+    momentFields_.reset(new cloudFunctions::momentFields(*this));
+    momentSampler_.reset(new cloudFunctions::momentSampler(*this));
+    massBalance_.reset(new cloudFunctions::massBalance(*this));
 
-    // The user's functions (sizeDistribution), after the moment fields:
-    // their postStep finds the particles sorted by cell
+    // The user's functions (sizeDistribution, cellWork), after the moment
+    // fields: their postStep finds the particles sorted by cell
     if (properties_.found("cloudFunctions"))
     {
         const dictionary& dict = properties_.subDict("cloudFunctions");
@@ -283,22 +285,12 @@ void Foam::coagulationCloud::createInitialPopulation()
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-const Foam::PtrList<Foam::volScalarField>&
-Foam::coagulationCloud::moments() const
-{
-    return refCast<const cloudFunctions::momentFields>(functions_[0]).fields();
-}
-
-
 void Foam::coagulationCloud::cellStep(const scalar dt)
 {
     cellStepper_->advance(dt, events_, removedInCells_);
     checkMemory();
 
-    for (cloudFunction& f : functions_)
-    {
-        f.postCellStep();
-    }
+    forAllFunctions([](cloudFunction& f) { f.postCellStep(); });
 }
 
 
@@ -320,10 +312,7 @@ void Foam::coagulationCloud::transport
         out
     );
 
-    for (cloudFunction& f : functions_)
-    {
-        f.postMove(out);
-    }
+    forAllFunctions([&out](cloudFunction& f) { f.postMove(out); });
 
     if (injection_)
     {
@@ -332,7 +321,7 @@ void Foam::coagulationCloud::transport
             U,
             dt,
             inflowStream,
-            refCast<cloudFunctions::massBalance>(functions_[2]).inflow()
+            massBalance_->inflow()
         );
     }
 }
@@ -340,29 +329,20 @@ void Foam::coagulationCloud::transport
 
 void Foam::coagulationCloud::postStep()
 {
-    for (cloudFunction& f : functions_)
-    {
-        f.postStep();
-    }
+    forAllFunctions([](cloudFunction& f) { f.postStep(); });
 }
 
 
 void Foam::coagulationCloud::onWrite()
 {
-    for (cloudFunction& f : functions_)
-    {
-        f.write();
-    }
+    forAllFunctions([](cloudFunction& f) { f.write(); });
     pendingWrite_ = mesh_.time().timeName();
 }
 
 
 void Foam::coagulationCloud::endRun()
 {
-    for (cloudFunction& f : functions_)
-    {
-        f.end();
-    }
+    forAllFunctions([](cloudFunction& f) { f.end(); });
     completeWrite();
 }
 
