@@ -60,6 +60,7 @@ Foam::coagulationCloud::coagulationCloud
 :
     Cloud<coagulationParticle>(U.mesh(), cloudName, false),
     mesh_(U.mesh()),
+    U_(U),
     properties_
     (
         IOobject
@@ -95,6 +96,7 @@ Foam::coagulationCloud::coagulationCloud
     massBalance_(),
     functions_(),
     memoryLimit_(0),
+    timer_(),
     pendingWrite_()
 {
     // Every entry is checked: an unknown keyword is a typo, not a default
@@ -296,7 +298,6 @@ void Foam::coagulationCloud::cellStep(const scalar dt)
 
 void Foam::coagulationCloud::transport
 (
-    const volVectorField& U,
     const scalar dt,
     const streamSeeds::purpose inflowStream
 )
@@ -304,7 +305,7 @@ void Foam::coagulationCloud::transport
     transportModel::outflow out(mesh_.boundaryMesh().size());
     transport_->move
     (
-        U,
+        U_,
         dt,
         inflowStream == streamSeeds::inflowFirstHalf
       ? streamSeeds::walkFirstHalf
@@ -318,7 +319,7 @@ void Foam::coagulationCloud::transport
     {
         injection_->inject
         (
-            U,
+            U_,
             dt,
             inflowStream,
             massBalance_->inflow()
@@ -333,10 +334,55 @@ void Foam::coagulationCloud::postStep()
 }
 
 
+void Foam::coagulationCloud::evolve()
+{
+    const scalar dt = mesh_.time().deltaTValue();
+
+    // Operator splitting over dt (Patterson & Wagner 2011, section 2) of
+    //   S: the source terms, each cell on its own: inception (eqs 10, 20)
+    //      and coagulation (SWA jumps 21-22, DSA jumps 11-15)
+    //   A: transport, every particle with the frozen flow U, then its
+    //      random walk dX = grad(D) dt + sqrt(2D) dW (coagulation-diffusion
+    //      paper, eq. 8); outflow leaves, walls rebound or take the
+    //      particle (deposition); then inflow enters
+    timer_.start();
+    if (splitting_ == splittingScheme::Lie)
+    {
+        // Lie, the paper's scheme: S(dt) then A(dt); first order in dt
+        cellStep(dt);
+        timer_.coagulationDone();
+        transport(dt);
+        timer_.transportDone(this->size());
+    }
+    else
+    {
+        // Strang: A(dt/2), S(dt), A(dt/2); second order in dt
+        transport(0.5*dt, streamSeeds::inflowFirstHalf);
+        timer_.transportDone(this->size());
+        cellStep(dt);
+        timer_.coagulationDone();
+        transport(0.5*dt);
+        timer_.transportDone(this->size());
+    }
+
+    // The cloud functions on the new state: M0..M3 (eq. 37), samples
+    postStep();
+}
+
+
 void Foam::coagulationCloud::onWrite()
 {
     forAllFunctions([](cloudFunction& f) { f.write(); });
     pendingWrite_ = mesh_.time().timeName();
+}
+
+
+void Foam::coagulationCloud::reportTimes() const
+{
+    timer_.report
+    (
+        events_, transport_->transfers(), cellStepper_->workSinceStart()
+    );
 }
 
 
