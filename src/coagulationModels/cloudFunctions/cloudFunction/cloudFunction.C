@@ -11,14 +11,17 @@
 
 namespace Foam
 {
+namespace coagulation
+{
     defineTypeNameAndDebug(cloudFunction, 0);
     defineRunTimeSelectionTable(cloudFunction, dictionary);
+}
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::cloudFunction::cloudFunction(coagulationCloud& cloud)
+Foam::coagulation::cloudFunction::cloudFunction(coagulationCloud& cloud)
 :
     cloud_(cloud)
 {}
@@ -26,7 +29,8 @@ Foam::cloudFunction::cloudFunction(coagulationCloud& cloud)
 
 // * * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
 
-Foam::autoPtr<Foam::cloudFunction> Foam::cloudFunction::New
+Foam::autoPtr<Foam::coagulation::cloudFunction>
+Foam::coagulation::cloudFunction::New
 (
     const word& name,
     const dictionary& dict,

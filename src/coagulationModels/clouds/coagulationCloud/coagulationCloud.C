@@ -16,8 +16,8 @@
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * //
 
-const Foam::Enum<Foam::coagulationCloud::splittingScheme>
-Foam::coagulationCloud::splittingSchemeNames
+const Foam::Enum<Foam::coagulation::coagulationCloud::splittingScheme>
+Foam::coagulation::coagulationCloud::splittingSchemeNames
 ({
     { splittingScheme::Lie, "Lie" },
     { splittingScheme::Strang, "Strang" }
@@ -27,7 +27,7 @@ Foam::coagulationCloud::splittingSchemeNames
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 coag::NumberControl
-Foam::coagulationCloud::readNumberControl() const
+Foam::coagulation::coagulationCloud::readNumberControl() const
 {
     coag::NumberControl control;
     if (properties_.found("numberControl"))
@@ -52,7 +52,7 @@ Foam::coagulationCloud::readNumberControl() const
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::coagulationCloud::coagulationCloud
+Foam::coagulation::coagulationCloud::coagulationCloud
 (
     const volVectorField& U,
     const word& cloudName
@@ -257,7 +257,7 @@ Foam::coagulationCloud::coagulationCloud
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::coagulationCloud::createInitialPopulation()
+void Foam::coagulation::coagulationCloud::createInitialPopulation()
 {
     if (!properties_.found("initialPopulation"))
     {
@@ -287,7 +287,7 @@ void Foam::coagulationCloud::createInitialPopulation()
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::coagulationCloud::cellStep(const scalar dt)
+void Foam::coagulation::coagulationCloud::cellStep(const scalar dt)
 {
     cellStepper_->advance(dt, events_, removedInCells_);
     checkMemory();
@@ -296,7 +296,7 @@ void Foam::coagulationCloud::cellStep(const scalar dt)
 }
 
 
-void Foam::coagulationCloud::transport
+void Foam::coagulation::coagulationCloud::transport
 (
     const scalar dt,
     const streamSeeds::purpose inflowStream
@@ -328,13 +328,13 @@ void Foam::coagulationCloud::transport
 }
 
 
-void Foam::coagulationCloud::postStep()
+void Foam::coagulation::coagulationCloud::postStep()
 {
     forAllFunctions([](cloudFunction& f) { f.postStep(); });
 }
 
 
-void Foam::coagulationCloud::evolve()
+void Foam::coagulation::coagulationCloud::evolve()
 {
     const scalar dt = mesh_.time().deltaTValue();
 
@@ -370,14 +370,14 @@ void Foam::coagulationCloud::evolve()
 }
 
 
-void Foam::coagulationCloud::onWrite()
+void Foam::coagulation::coagulationCloud::onWrite()
 {
     forAllFunctions([](cloudFunction& f) { f.write(); });
     pendingWrite_ = mesh_.time().timeName();
 }
 
 
-void Foam::coagulationCloud::reportTimes() const
+void Foam::coagulation::coagulationCloud::reportTimes() const
 {
     timer_.report
     (
@@ -386,7 +386,7 @@ void Foam::coagulationCloud::reportTimes() const
 }
 
 
-void Foam::coagulationCloud::endRun()
+void Foam::coagulation::coagulationCloud::endRun()
 {
     forAllFunctions([](cloudFunction& f) { f.end(); });
     completeWrite();

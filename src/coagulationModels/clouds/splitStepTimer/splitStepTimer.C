@@ -10,7 +10,7 @@
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::splitStepTimer::report
+void Foam::coagulation::splitStepTimer::report
 (
     const coag::StepStatistics& events,
     const transportModel::transferCounts& transfers,

@@ -27,7 +27,11 @@ inline uint64_t mix64(uint64_t z)
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::streamSeeds::streamSeeds(const dictionary& dict, const Time& time)
+Foam::coagulation::streamSeeds::streamSeeds
+(
+    const dictionary& dict,
+    const Time& time
+)
 :
     time_(time),
     seed_(0)
@@ -45,7 +49,7 @@ Foam::streamSeeds::streamSeeds(const dictionary& dict, const Time& time)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-uint64_t Foam::streamSeeds::operator()
+uint64_t Foam::coagulation::streamSeeds::operator()
 (
     const label index,
     const purpose p
