@@ -70,7 +70,7 @@ SECTIONS = {
         [("statisticalWeight", None)],
     (MODELS + "clouds/statisticalScaling/statisticalScaling.C", "statisticalScaling", 1):
         [("statisticalWeight/V1", None)],
-    (MODELS + "clouds/initialPopulation/initialPopulation.C", "initialPopulation", 0):
+    (MODELS + "submodels/injectionModels/initialPopulation/initialPopulation.C", "initialPopulation", 0):
         [("initialPopulation", None)],
     (MODELS + "submodels/coagulationKernels/coagulationKernel/coagulationKernel.C",
      "coagulationKernel", 0):
@@ -161,7 +161,7 @@ HEADER_SECTIONS = {
         [("coagulationProperties", None), ("numberControl", None)],
     MODELS + "clouds/statisticalScaling/statisticalScaling.H":
         [("statisticalWeight", None), ("statisticalWeight/V1", None)],
-    MODELS + "clouds/initialPopulation/initialPopulation.H": [("initialPopulation", None)],
+    MODELS + "submodels/injectionModels/initialPopulation/initialPopulation.H": [("initialPopulation", None)],
     MODELS + "submodels/coagulationKernels/coagulationKernel/coagulationKernel.H":
         CORE_KERNELS,
     MODELS + "submodels/coagulationKernels/localSaffmanTurner/localSaffmanTurner.H":

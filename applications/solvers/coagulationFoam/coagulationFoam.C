@@ -32,7 +32,6 @@ Description
 
 #include "fvCFD.H"
 #include "coagulationCloud.H"
-#include "splitStepTimer.H"
 #include "caseChecks.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
@@ -59,50 +58,23 @@ int main(int argc, char *argv[])
         cloud.completeWrite();
 
         ++runTime;
-        const scalar dt = runTime.deltaTValue();
 
         Info<< "Time = " << runTime.timeName()
             << "  particles = " << returnReduce(cloud.size(), sumOp<label>())
             << nl;
 
-        // Operator splitting over dt (Patterson & Wagner 2011, §2) of
-        //   S: the source terms, each cell on its own: inception (eqs 10,
-        //      20) and coagulation (SWA jumps 21-22, DSA jumps 11-15)
-        //   A: transport, every particle with the frozen flow U, then its
-        //      random walk dX = grad(D) dt + sqrt(2D) dW (coagulation-
-        //      diffusion paper, eq. 8); outflow leaves, walls rebound or
-        //      take the particle (deposition); then inflow enters
-        timer.start();
-        if (cloud.splitting() == coagulationCloud::splittingScheme::Lie)
-        {
-            // Lie, the paper's scheme: S(dt) then A(dt); first order in dt
-            cloud.cellStep(dt);
-            timer.coagulationDone();
-            cloud.transport(U, dt);
-            timer.transportDone(cloud.size());
-        }
-        else
-        {
-            // Strang: A(dt/2), S(dt), A(dt/2); second order in dt
-            cloud.transport(U, 0.5*dt, streamSeeds::inflowFirstHalf);
-            timer.transportDone(cloud.size());
-            cloud.cellStep(dt);
-            timer.coagulationDone();
-            cloud.transport(U, 0.5*dt);
-            timer.transportDone(cloud.size());
-        }
-
-        // The cloud functions on the new state: M0..M3 (eq. 37), samples
-        cloud.postStep();
+        // The split step over deltaT (Patterson & Wagner 2011, section 2):
+        // Strang A(dt/2) S(dt) A(dt/2) or Lie S(dt) A(dt), S inception +
+        // coagulation in every cell, A transport; then the cloud functions
+        // on the new state (M0..M3, samples)
+        cloud.evolve();
 
         if (runTime.write())
         {
+            // The cloud functions' output (the balances checked), then the
+            // split step's wall times
             cloud.onWrite();
-            timer.report
-            (
-                cloud.events(), cloud.transportStep().transfers(),
-                cloud.stepper().workSinceStart()
-            );
+            cloud.reportTimes();
         }
     }
 

@@ -4,10 +4,8 @@
 // workDecomposition: a decomposition for the `manual` method that balances the work per cell
 // (the field coagulationWork that the cellWork cloud function writes) with the smallest
 // largest share, where OpenFOAM's weighted simple/hierarchical split the cumulative weight
-// and leave a heavy cell that straddles a share with the rank it starts in (issue 19: on
-// the additive duct, with events counted at half a particle, the cumulative split left 59 %
-// of the work on one of 2 ranks, this 52 %; with the work count of cellWork both cut at the
-// same cell).
+// and leave a heavy cell that straddles a share with the rank it starts in (the measured
+// shares of both on the additive duct are in doc/performance.md).
 //
 // Like hierarchical, the cells are cut into n.x slabs along x, each slab into n.y along y,
 // each of those into n.z along z (cells ordered by their centre, ties by cell index); every

@@ -21,14 +21,25 @@
 
 namespace Foam
 {
+namespace coagulation
+{
     defineTypeNameAndDebug(coagulationParticle, 0);
-    defineTemplateTypeNameAndDebug(Cloud<coagulationParticle>, 0);
+}
+
+    // The cloud's type name as before the namespace: the class of its
+    // particle files ('Cloud<coagulationParticle>')
+    defineTemplateTypeNameAndDebugWithName
+    (
+        Cloud<coagulation::coagulationParticle>,
+        "Cloud<coagulationParticle>",
+        0
+    );
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-bool Foam::coagulationParticle::move
+bool Foam::coagulation::coagulationParticle::move
 (
     coagulationCloud& cloud,
     trackingData& td,
@@ -99,7 +110,7 @@ bool Foam::coagulationParticle::move
 }
 
 
-bool Foam::coagulationParticle::hitPatch
+bool Foam::coagulation::coagulationParticle::hitPatch
 (
     coagulationCloud&,
     trackingData& td
@@ -158,7 +169,7 @@ bool Foam::coagulationParticle::hitPatch
 }
 
 
-void Foam::coagulationParticle::hitProcessorPatch
+void Foam::coagulation::coagulationParticle::hitProcessorPatch
 (
     coagulationCloud&,
     trackingData& td

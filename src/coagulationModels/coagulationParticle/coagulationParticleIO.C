@@ -12,7 +12,7 @@
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-const std::size_t Foam::coagulationParticle::sizeofFields
+const std::size_t Foam::coagulation::coagulationParticle::sizeofFields
 (
     sizeof(coagulationParticle) - sizeof(particle)
 );
@@ -20,7 +20,7 @@ const std::size_t Foam::coagulationParticle::sizeofFields
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::coagulationParticle::coagulationParticle
+Foam::coagulation::coagulationParticle::coagulationParticle
 (
     const polyMesh& mesh,
     Istream& is,
@@ -57,7 +57,10 @@ Foam::coagulationParticle::coagulationParticle
 }
 
 
-void Foam::coagulationParticle::readFields(Cloud<coagulationParticle>& c)
+void Foam::coagulation::coagulationParticle::readFields
+(
+    Cloud<coagulationParticle>& c
+)
 {
     const bool valid = c.size();
 
@@ -79,7 +82,10 @@ void Foam::coagulationParticle::readFields(Cloud<coagulationParticle>& c)
 }
 
 
-void Foam::coagulationParticle::writeFields(const Cloud<coagulationParticle>& c)
+void Foam::coagulation::coagulationParticle::writeFields
+(
+    const Cloud<coagulationParticle>& c
+)
 {
     particle::writeFields(c);
 
@@ -103,7 +109,11 @@ void Foam::coagulationParticle::writeFields(const Cloud<coagulationParticle>& c)
 
 // * * * * * * * * * * * * * * * IOstream Operators  * * * * * * * * * * * * //
 
-Foam::Ostream& Foam::operator<<(Ostream& os, const coagulationParticle& p)
+Foam::Ostream& Foam::coagulation::operator<<
+(
+    Ostream& os,
+    const coagulationParticle& p
+)
 {
     if (os.format() == IOstream::ASCII)
     {

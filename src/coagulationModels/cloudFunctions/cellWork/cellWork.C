@@ -14,17 +14,20 @@
 
 namespace Foam
 {
+namespace coagulation
+{
 namespace cloudFunctions
 {
     defineTypeNameAndDebug(cellWork, 0);
     addToRunTimeSelectionTable(cloudFunction, cellWork, dictionary);
 }
 }
+}
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::cloudFunctions::cellWork::cellWork
+Foam::coagulation::cloudFunctions::cellWork::cellWork
 (
     const word& name,
     const dictionary& dict,
@@ -70,7 +73,7 @@ Foam::cloudFunctions::cellWork::cellWork
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::cloudFunctions::cellWork::postCellStep()
+void Foam::coagulation::cloudFunctions::cellWork::postCellStep()
 {
     const cellStepper& step = cloud_.stepper();
     forAll(sum_, celli)
@@ -102,7 +105,10 @@ void Foam::cloudFunctions::cellWork::postCellStep()
 }
 
 
-void Foam::cloudFunctions::cellWork::postMove(const transportModel::outflow&)
+void Foam::coagulation::cloudFunctions::cellWork::postMove
+(
+    const transportModel::outflow&
+)
 {
     const std::chrono::steady_clock::time_point now =
         std::chrono::steady_clock::now();
@@ -112,13 +118,13 @@ void Foam::cloudFunctions::cellWork::postMove(const transportModel::outflow&)
 }
 
 
-void Foam::cloudFunctions::cellWork::postStep()
+void Foam::coagulation::cloudFunctions::cellWork::postStep()
 {
     last_ = std::chrono::steady_clock::now();
 }
 
 
-void Foam::cloudFunctions::cellWork::reportFit()
+void Foam::coagulation::cloudFunctions::cellWork::reportFit()
 {
     const coag::CostFit::Result r = fit_.solve();
     const scalar m = moves_ > 0 ? transportSeconds_/moves_ : 0;

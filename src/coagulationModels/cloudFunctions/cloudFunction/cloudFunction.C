@@ -11,15 +11,17 @@
 
 namespace Foam
 {
+namespace coagulation
+{
     defineTypeNameAndDebug(cloudFunction, 0);
-    defineRunTimeSelectionTable(cloudFunction, cloud);
     defineRunTimeSelectionTable(cloudFunction, dictionary);
+}
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::cloudFunction::cloudFunction(coagulationCloud& cloud)
+Foam::coagulation::cloudFunction::cloudFunction(coagulationCloud& cloud)
 :
     cloud_(cloud)
 {}
@@ -27,29 +29,8 @@ Foam::cloudFunction::cloudFunction(coagulationCloud& cloud)
 
 // * * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
 
-Foam::autoPtr<Foam::cloudFunction> Foam::cloudFunction::New
-(
-    const word& functionType,
-    coagulationCloud& cloud
-)
-{
-    auto cstrIter = cloudConstructorTablePtr_->cfind(functionType);
-
-    if (!cstrIter.found())
-    {
-        FatalErrorInLookup
-        (
-            "cloudFunction",
-            functionType,
-            *cloudConstructorTablePtr_
-        ) << exit(FatalError);
-    }
-
-    return autoPtr<cloudFunction>(cstrIter()(cloud));
-}
-
-
-Foam::autoPtr<Foam::cloudFunction> Foam::cloudFunction::New
+Foam::autoPtr<Foam::coagulation::cloudFunction>
+Foam::coagulation::cloudFunction::New
 (
     const word& name,
     const dictionary& dict,

@@ -9,23 +9,27 @@
 #include "IFstream.H"
 #include "OFstream.H"
 #include "coagulationCloud.H"
-#include "addToRunTimeSelectionTable.H"
 #include "processorPolyPatch.H"
 #include "OSspecific.H"
 
 namespace Foam
 {
+namespace coagulation
+{
 namespace cloudFunctions
 {
     defineTypeNameAndDebug(massBalance, 0);
-    addToRunTimeSelectionTable(cloudFunction, massBalance, cloud);
+}
 }
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::cloudFunctions::massBalance::massBalance(coagulationCloud& cloud)
+Foam::coagulation::cloudFunctions::massBalance::massBalance
+(
+    coagulationCloud& cloud
+)
 :
     cloudFunction(cloud),
     initial_(),
@@ -64,7 +68,8 @@ Foam::cloudFunctions::massBalance::massBalance(coagulationCloud& cloud)
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::particleBalance Foam::cloudFunctions::massBalance::incepted() const
+Foam::coagulation::particleBalance
+Foam::coagulation::cloudFunctions::massBalance::incepted() const
 {
     const coag::StepStatistics& events = cloud_.events();
     const scalar W = cloud_.scaling().particleWeight();
@@ -76,7 +81,8 @@ Foam::particleBalance Foam::cloudFunctions::massBalance::incepted() const
 }
 
 
-Foam::particleBalance Foam::cloudFunctions::massBalance::domain() const
+Foam::coagulation::particleBalance
+Foam::coagulation::cloudFunctions::massBalance::domain() const
 {
     particleBalance b;
     for (const coagulationParticle& p : cloud_)
@@ -92,7 +98,7 @@ Foam::particleBalance Foam::cloudFunctions::massBalance::domain() const
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::cloudFunctions::massBalance::postMove
+void Foam::coagulation::cloudFunctions::massBalance::postMove
 (
     const transportModel::outflow& out
 )
@@ -110,7 +116,7 @@ void Foam::cloudFunctions::massBalance::postMove
 }
 
 
-Foam::scalar Foam::cloudFunctions::massBalance::massError() const
+Foam::scalar Foam::coagulation::cloudFunctions::massBalance::massError() const
 {
     const scalar inflow = returnReduce(inflow_.mass, sumOp<scalar>());
     const scalar incepted = returnReduce(this->incepted().mass, sumOp<scalar>());
@@ -128,7 +134,8 @@ Foam::scalar Foam::cloudFunctions::massBalance::massError() const
 }
 
 
-Foam::label Foam::cloudFunctions::massBalance::particleError() const
+Foam::label
+Foam::coagulation::cloudFunctions::massBalance::particleError() const
 {
     label change =
         inflow_.particles + incepted().particles - outflow_.particles
@@ -139,7 +146,7 @@ Foam::label Foam::cloudFunctions::massBalance::particleError() const
 }
 
 
-void Foam::cloudFunctions::massBalance::check() const
+void Foam::coagulation::cloudFunctions::massBalance::check() const
 {
     const scalar mError = massError();
     const label pError = particleError();
@@ -155,7 +162,7 @@ void Foam::cloudFunctions::massBalance::check() const
 }
 
 
-void Foam::cloudFunctions::massBalance::writePatches() const
+void Foam::coagulation::cloudFunctions::massBalance::writePatches() const
 {
     // Per patch since the case's first start: the log, one row per patch
     // and write time in postProcessing/coagulationBalance/patches.csv, and
@@ -223,7 +230,7 @@ void Foam::cloudFunctions::massBalance::writePatches() const
 }
 
 
-void Foam::cloudFunctions::massBalance::write()
+void Foam::coagulation::cloudFunctions::massBalance::write()
 {
     particleBalance inflow(inflow_), incepted(this->incepted());
     particleBalance outflow(outflow_);

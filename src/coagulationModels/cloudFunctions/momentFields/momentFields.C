@@ -8,21 +8,25 @@
 #include "momentFields.H"
 #include "coagulationCloud.H"
 #include "zeroGradientFvPatchFields.H"
-#include "addToRunTimeSelectionTable.H"
 
 namespace Foam
+{
+namespace coagulation
 {
 namespace cloudFunctions
 {
     defineTypeNameAndDebug(momentFields, 0);
-    addToRunTimeSelectionTable(cloudFunction, momentFields, cloud);
+}
 }
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::cloudFunctions::momentFields::momentFields(coagulationCloud& cloud)
+Foam::coagulation::cloudFunctions::momentFields::momentFields
+(
+    coagulationCloud& cloud
+)
 :
     cloudFunction(cloud),
     moments_(4)
@@ -55,7 +59,7 @@ Foam::cloudFunctions::momentFields::momentFields(coagulationCloud& cloud)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::cloudFunctions::momentFields::update()
+void Foam::coagulation::cloudFunctions::momentFields::update()
 {
     // The sort is kept for the next cell step: nothing changes the cloud in
     // between

@@ -7,24 +7,28 @@
 
 #include "momentSampler.H"
 #include "coagulationCloud.H"
-#include "addToRunTimeSelectionTable.H"
 #include "fvMesh.H"
 #include "OSspecific.H"
 #include "caseChecks.H"
 
 namespace Foam
 {
+namespace coagulation
+{
 namespace cloudFunctions
 {
     defineTypeNameAndDebug(momentSampler, 0);
-    addToRunTimeSelectionTable(cloudFunction, momentSampler, cloud);
+}
 }
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::cloudFunctions::momentSampler::momentSampler(coagulationCloud& cloud)
+Foam::coagulation::cloudFunctions::momentSampler::momentSampler
+(
+    coagulationCloud& cloud
+)
 :
     cloudFunction(cloud),
     tRelax_(0),
@@ -111,7 +115,7 @@ Foam::cloudFunctions::momentSampler::momentSampler(coagulationCloud& cloud)
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::cloudFunctions::momentSampler::setAttributes
+void Foam::coagulation::cloudFunctions::momentSampler::setAttributes
 (
     const scalar dt,
     const scalar interval
@@ -140,7 +144,7 @@ void Foam::cloudFunctions::momentSampler::setAttributes
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::cloudFunctions::momentSampler::sample()
+void Foam::coagulation::cloudFunctions::momentSampler::sample()
 {
     const Time& runTime = cloud_.pMesh().time();
     if (runTime.timeIndex() % stepsPerSample_ != 0)
@@ -166,7 +170,7 @@ void Foam::cloudFunctions::momentSampler::sample()
 }
 
 
-void Foam::cloudFunctions::momentSampler::flush()
+void Foam::coagulation::cloudFunctions::momentSampler::flush()
 {
     try
     {

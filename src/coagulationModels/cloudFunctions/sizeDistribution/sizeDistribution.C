@@ -18,17 +18,20 @@
 
 namespace Foam
 {
+namespace coagulation
+{
 namespace cloudFunctions
 {
     defineTypeNameAndDebug(sizeDistribution, 0);
     addToRunTimeSelectionTable(cloudFunction, sizeDistribution, dictionary);
 }
 }
+}
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-coag::SizeBins Foam::cloudFunctions::sizeDistribution::readBins
+coag::SizeBins Foam::coagulation::cloudFunctions::sizeDistribution::readBins
 (
     const dictionary& dict
 )
@@ -71,7 +74,7 @@ coag::SizeBins Foam::cloudFunctions::sizeDistribution::readBins
 }
 
 
-void Foam::cloudFunctions::sizeDistribution::readRegions
+void Foam::coagulation::cloudFunctions::sizeDistribution::readRegions
 (
     const dictionary& dict
 )
@@ -182,7 +185,8 @@ void Foam::cloudFunctions::sizeDistribution::readRegions
 }
 
 
-Foam::label Foam::cloudFunctions::sizeDistribution::nColumns() const
+Foam::label
+Foam::coagulation::cloudFunctions::sizeDistribution::nColumns() const
 {
     return label(bins_.size()) + 2 + label(coag::DerivedSizes::names().size());
 }
@@ -190,7 +194,7 @@ Foam::label Foam::cloudFunctions::sizeDistribution::nColumns() const
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::cloudFunctions::sizeDistribution::sizeDistribution
+Foam::coagulation::cloudFunctions::sizeDistribution::sizeDistribution
 (
     const word& name,
     const dictionary& dict,
@@ -354,7 +358,7 @@ Foam::cloudFunctions::sizeDistribution::sizeDistribution
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::cloudFunctions::sizeDistribution::sample()
+void Foam::coagulation::cloudFunctions::sizeDistribution::sample()
 {
     const Time& runTime = cloud_.pMesh().time();
     if
@@ -431,7 +435,7 @@ void Foam::cloudFunctions::sizeDistribution::sample()
 }
 
 
-void Foam::cloudFunctions::sizeDistribution::writeAverages() const
+void Foam::coagulation::cloudFunctions::sizeDistribution::writeAverages() const
 {
     const Time& runTime = cloud_.pMesh().time();
     const fileName dir
@@ -524,7 +528,7 @@ void Foam::cloudFunctions::sizeDistribution::writeAverages() const
 }
 
 
-void Foam::cloudFunctions::sizeDistribution::flush()
+void Foam::coagulation::cloudFunctions::sizeDistribution::flush()
 {
     if (!writer_)
     {
@@ -543,7 +547,7 @@ void Foam::cloudFunctions::sizeDistribution::flush()
 }
 
 
-void Foam::cloudFunctions::sizeDistribution::write()
+void Foam::coagulation::cloudFunctions::sizeDistribution::write()
 {
     const auto start = std::chrono::steady_clock::now();
     // Before timeStart there is nothing to average
@@ -559,7 +563,7 @@ void Foam::cloudFunctions::sizeDistribution::write()
 }
 
 
-void Foam::cloudFunctions::sizeDistribution::end()
+void Foam::coagulation::cloudFunctions::sizeDistribution::end()
 {
     const auto start = std::chrono::steady_clock::now();
     flush();

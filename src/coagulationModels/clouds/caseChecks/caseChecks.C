@@ -13,7 +13,7 @@
 
 // * * * * * * * * * * * * * * * * Functions * * * * * * * * * * * * * * * //
 
-void Foam::caseChecks::keywords
+void Foam::coagulation::caseChecks::keywords
 (
     const dictionary& dict,
     const wordList& valid
@@ -33,7 +33,7 @@ void Foam::caseChecks::keywords
 }
 
 
-Foam::scalar Foam::caseChecks::positive
+Foam::scalar Foam::coagulation::caseChecks::positive
 (
     const dictionary& dict,
     const word& key
@@ -50,7 +50,7 @@ Foam::scalar Foam::caseChecks::positive
 }
 
 
-Foam::label Foam::caseChecks::stepsPer
+Foam::label Foam::coagulation::caseChecks::stepsPer
 (
     const dictionary& dict,
     const word& key,
@@ -76,7 +76,7 @@ Foam::label Foam::caseChecks::stepsPer
 }
 
 
-Foam::scalar Foam::caseChecks::nonNegative
+Foam::scalar Foam::coagulation::caseChecks::nonNegative
 (
     const dictionary& dict,
     const word& key
@@ -93,7 +93,7 @@ Foam::scalar Foam::caseChecks::nonNegative
 }
 
 
-Foam::autoPtr<Foam::volScalarField> Foam::caseChecks::cellField
+Foam::autoPtr<Foam::volScalarField> Foam::coagulation::caseChecks::cellField
 (
     const dictionary& dict,
     const word& model,
@@ -159,7 +159,7 @@ Foam::autoPtr<Foam::volScalarField> Foam::caseChecks::cellField
 }
 
 
-void Foam::caseChecks::velocity(const volVectorField& U)
+void Foam::coagulation::caseChecks::velocity(const volVectorField& U)
 {
     auto check = [&U](const vectorField& values, const word& where)
     {
@@ -193,7 +193,7 @@ void Foam::caseChecks::velocity(const volVectorField& U)
 }
 
 
-void Foam::caseChecks::emptyPatches(const fvMesh& mesh)
+void Foam::coagulation::caseChecks::emptyPatches(const fvMesh& mesh)
 {
     // In a 1-D/2-D mesh every cell has two empty faces normal to each empty
     // direction. An empty patch with any other count is not a reduced-D
@@ -243,7 +243,7 @@ void Foam::caseChecks::emptyPatches(const fvMesh& mesh)
 }
 
 
-Foam::scalar Foam::caseChecks::maxCourant
+Foam::scalar Foam::coagulation::caseChecks::maxCourant
 (
     const volVectorField& U,
     const scalar deltaT
@@ -259,7 +259,7 @@ Foam::scalar Foam::caseChecks::maxCourant
 }
 
 
-void Foam::caseChecks::courant(const volVectorField& U)
+void Foam::coagulation::caseChecks::courant(const volVectorField& U)
 {
     const Time& runTime = U.time();
     const scalar deltaT = runTime.deltaTValue();
@@ -280,7 +280,7 @@ void Foam::caseChecks::courant(const volVectorField& U)
 }
 
 
-void Foam::caseChecks::timeControls(const Time& runTime)
+void Foam::coagulation::caseChecks::timeControls(const Time& runTime)
 {
     const scalar deltaT = runTime.deltaTValue();
     const scalar start = runTime.startTime().value();

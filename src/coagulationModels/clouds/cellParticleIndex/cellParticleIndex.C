@@ -9,7 +9,7 @@
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::cellParticleIndex::cellParticleIndex()
+Foam::coagulation::cellParticleIndex::cellParticleIndex()
 :
     particles_(),
     cells_(),
@@ -24,7 +24,10 @@ Foam::cellParticleIndex::cellParticleIndex()
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::cellParticleIndex::list(Cloud<coagulationParticle>& cloud)
+void Foam::coagulation::cellParticleIndex::list
+(
+    Cloud<coagulationParticle>& cloud
+)
 {
     if (listValid_)
     {
@@ -45,7 +48,7 @@ void Foam::cellParticleIndex::list(Cloud<coagulationParticle>& cloud)
 }
 
 
-void Foam::cellParticleIndex::sort
+void Foam::coagulation::cellParticleIndex::sort
 (
     Cloud<coagulationParticle>& cloud,
     const label nCells
@@ -87,7 +90,10 @@ void Foam::cellParticleIndex::sort
 }
 
 
-void Foam::cellParticleIndex::compact(const std::vector<char>& removed)
+void Foam::coagulation::cellParticleIndex::compact
+(
+    const std::vector<char>& removed
+)
 {
     const label n = particles_.size();
     label kept = 0;

@@ -18,7 +18,7 @@
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::cellStepper::cellStepper
+Foam::coagulation::cellStepper::cellStepper
 (
     coagulationCloud& cloud,
     const cellAlgorithm& algorithm,
@@ -41,7 +41,7 @@ Foam::cellStepper::cellStepper
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::cellStepper::advanceCell
+void Foam::coagulation::cellStepper::advanceCell
 (
     const label celli,
     const scalar dt,
@@ -125,7 +125,7 @@ void Foam::cellStepper::advanceCell
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::cellStepper::advance
+void Foam::coagulation::cellStepper::advance
 (
     const scalar dt,
     coag::StepStatistics& events,

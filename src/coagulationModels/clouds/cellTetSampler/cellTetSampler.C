@@ -12,7 +12,7 @@
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::cellTetSampler::cellTetSampler(const polyMesh& mesh)
+Foam::coagulation::cellTetSampler::cellTetSampler(const polyMesh& mesh)
 :
     cellTets_(mesh.nCells()),
     cellTetVolumes_(mesh.nCells()),
@@ -36,7 +36,8 @@ Foam::cellTetSampler::cellTetSampler(const polyMesh& mesh)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::cellTetSampler::point Foam::cellTetSampler::sample
+Foam::coagulation::cellTetSampler::point
+Foam::coagulation::cellTetSampler::sample
 (
     const label celli,
     coag::Rng& rng

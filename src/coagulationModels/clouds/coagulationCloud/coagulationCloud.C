@@ -7,8 +7,6 @@
 
 #include "coagulationCloud.H"
 #include "caseChecks.H"
-#include "momentFields.H"
-#include "massBalance.H"
 
 #include <cstdlib>
 
@@ -18,8 +16,8 @@
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * //
 
-const Foam::Enum<Foam::coagulationCloud::splittingScheme>
-Foam::coagulationCloud::splittingSchemeNames
+const Foam::Enum<Foam::coagulation::coagulationCloud::splittingScheme>
+Foam::coagulation::coagulationCloud::splittingSchemeNames
 ({
     { splittingScheme::Lie, "Lie" },
     { splittingScheme::Strang, "Strang" }
@@ -29,7 +27,7 @@ Foam::coagulationCloud::splittingSchemeNames
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 coag::NumberControl
-Foam::coagulationCloud::readNumberControl() const
+Foam::coagulation::coagulationCloud::readNumberControl() const
 {
     coag::NumberControl control;
     if (properties_.found("numberControl"))
@@ -54,7 +52,7 @@ Foam::coagulationCloud::readNumberControl() const
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::coagulationCloud::coagulationCloud
+Foam::coagulation::coagulationCloud::coagulationCloud
 (
     const volVectorField& U,
     const word& cloudName
@@ -62,6 +60,7 @@ Foam::coagulationCloud::coagulationCloud
 :
     Cloud<coagulationParticle>(U.mesh(), cloudName, false),
     mesh_(U.mesh()),
+    U_(U),
     properties_
     (
         IOobject
@@ -92,8 +91,12 @@ Foam::coagulationCloud::coagulationCloud
     patchInteraction_(),
     events_(),
     removedInCells_(0),
+    momentFields_(),
+    momentSampler_(),
+    massBalance_(),
     functions_(),
     memoryLimit_(0),
+    timer_(),
     pendingWrite_()
 {
     // Every entry is checked: an unknown keyword is a typo, not a default
@@ -206,13 +209,14 @@ Foam::coagulationCloud::coagulationCloud
     // Checked before anything is written
     checkFlow(U);
 
-    for (const char* f : {"momentFields", "momentSampler", "massBalance"})
-    {
-        functions_.append(cloudFunction::New(f, *this));
-    }
+    // The functions of every run, on the particles of the start (the
+    // balances count these as the initial population)
+    momentFields_.reset(new cloudFunctions::momentFields(*this));
+    momentSampler_.reset(new cloudFunctions::momentSampler(*this));
+    massBalance_.reset(new cloudFunctions::massBalance(*this));
 
-    // The user's functions (sizeDistribution), after the moment fields:
-    // their postStep finds the particles sorted by cell
+    // The user's functions (sizeDistribution, cellWork), after the moment
+    // fields: their postStep finds the particles sorted by cell
     if (properties_.found("cloudFunctions"))
     {
         const dictionary& dict = properties_.subDict("cloudFunctions");
@@ -253,7 +257,7 @@ Foam::coagulationCloud::coagulationCloud
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::coagulationCloud::createInitialPopulation()
+void Foam::coagulation::coagulationCloud::createInitialPopulation()
 {
     if (!properties_.found("initialPopulation"))
     {
@@ -283,28 +287,17 @@ void Foam::coagulationCloud::createInitialPopulation()
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-const Foam::PtrList<Foam::volScalarField>&
-Foam::coagulationCloud::moments() const
-{
-    return refCast<const cloudFunctions::momentFields>(functions_[0]).fields();
-}
-
-
-void Foam::coagulationCloud::cellStep(const scalar dt)
+void Foam::coagulation::coagulationCloud::cellStep(const scalar dt)
 {
     cellStepper_->advance(dt, events_, removedInCells_);
     checkMemory();
 
-    for (cloudFunction& f : functions_)
-    {
-        f.postCellStep();
-    }
+    forAllFunctions([](cloudFunction& f) { f.postCellStep(); });
 }
 
 
-void Foam::coagulationCloud::transport
+void Foam::coagulation::coagulationCloud::transport
 (
-    const volVectorField& U,
     const scalar dt,
     const streamSeeds::purpose inflowStream
 )
@@ -312,7 +305,7 @@ void Foam::coagulationCloud::transport
     transportModel::outflow out(mesh_.boundaryMesh().size());
     transport_->move
     (
-        U,
+        U_,
         dt,
         inflowStream == streamSeeds::inflowFirstHalf
       ? streamSeeds::walkFirstHalf
@@ -320,49 +313,82 @@ void Foam::coagulationCloud::transport
         out
     );
 
-    for (cloudFunction& f : functions_)
-    {
-        f.postMove(out);
-    }
+    forAllFunctions([&out](cloudFunction& f) { f.postMove(out); });
 
     if (injection_)
     {
         injection_->inject
         (
-            U,
+            U_,
             dt,
             inflowStream,
-            refCast<cloudFunctions::massBalance>(functions_[2]).inflow()
+            massBalance_->inflow()
         );
     }
 }
 
 
-void Foam::coagulationCloud::postStep()
+void Foam::coagulation::coagulationCloud::postStep()
 {
-    for (cloudFunction& f : functions_)
-    {
-        f.postStep();
-    }
+    forAllFunctions([](cloudFunction& f) { f.postStep(); });
 }
 
 
-void Foam::coagulationCloud::onWrite()
+void Foam::coagulation::coagulationCloud::evolve()
 {
-    for (cloudFunction& f : functions_)
+    const scalar dt = mesh_.time().deltaTValue();
+
+    // Operator splitting over dt (Patterson & Wagner 2011, section 2) of
+    //   S: the source terms, each cell on its own: inception (eqs 10, 20)
+    //      and coagulation (SWA jumps 21-22, DSA jumps 11-15)
+    //   A: transport, every particle with the frozen flow U, then its
+    //      random walk dX = grad(D) dt + sqrt(2D) dW (coagulation-diffusion
+    //      paper, eq. 8); outflow leaves, walls rebound or take the
+    //      particle (deposition); then inflow enters
+    timer_.start();
+    if (splitting_ == splittingScheme::Lie)
     {
-        f.write();
+        // Lie, the paper's scheme: S(dt) then A(dt); first order in dt
+        cellStep(dt);
+        timer_.coagulationDone();
+        transport(dt);
+        timer_.transportDone(this->size());
     }
+    else
+    {
+        // Strang: A(dt/2), S(dt), A(dt/2); second order in dt
+        transport(0.5*dt, streamSeeds::inflowFirstHalf);
+        timer_.transportDone(this->size());
+        cellStep(dt);
+        timer_.coagulationDone();
+        transport(0.5*dt);
+        timer_.transportDone(this->size());
+    }
+
+    // The cloud functions on the new state: M0..M3 (eq. 37), samples
+    postStep();
+}
+
+
+void Foam::coagulation::coagulationCloud::onWrite()
+{
+    forAllFunctions([](cloudFunction& f) { f.write(); });
     pendingWrite_ = mesh_.time().timeName();
 }
 
 
-void Foam::coagulationCloud::endRun()
+void Foam::coagulation::coagulationCloud::reportTimes() const
 {
-    for (cloudFunction& f : functions_)
-    {
-        f.end();
-    }
+    timer_.report
+    (
+        events_, transport_->transfers(), cellStepper_->workSinceStart()
+    );
+}
+
+
+void Foam::coagulation::coagulationCloud::endRun()
+{
+    forAllFunctions([](cloudFunction& f) { f.end(); });
     completeWrite();
 }
 

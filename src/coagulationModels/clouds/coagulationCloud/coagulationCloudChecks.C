@@ -50,7 +50,7 @@ Foam::dictionary meshSignature(const Foam::fvMesh& mesh)
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::scalar Foam::coagulationCloud::availableMemory()
+Foam::scalar Foam::coagulation::coagulationCloud::availableMemory()
 {
     std::ifstream meminfo("/proc/meminfo");
     std::string key;
@@ -67,7 +67,7 @@ Foam::scalar Foam::coagulationCloud::availableMemory()
 }
 
 
-Foam::scalar Foam::coagulationCloud::bytesPerParticle()
+Foam::scalar Foam::coagulation::coagulationCloud::bytesPerParticle()
 {
     // The particle and its heap block; list, cell and sort arrays; the
     // core's copy (coag::Particle) and a share of the sum tree in the cell
@@ -76,7 +76,7 @@ Foam::scalar Foam::coagulationCloud::bytesPerParticle()
 }
 
 
-void Foam::coagulationCloud::checkMemory() const
+void Foam::coagulation::coagulationCloud::checkMemory() const
 {
     const scalar bytes = this->size()*bytesPerParticle();
     if (bytes > memoryLimit_)
@@ -93,7 +93,10 @@ void Foam::coagulationCloud::checkMemory() const
 }
 
 
-void Foam::coagulationCloud::checkExpectedSize(const volVectorField& U) const
+void Foam::coagulation::coagulationCloud::checkExpectedSize
+(
+    const volVectorField& U
+) const
 {
     // SWA never removes a computational particle but by outflow or halving:
     // inception over one residence time (volume over outflow), or over the
@@ -173,7 +176,7 @@ void Foam::coagulationCloud::checkExpectedSize(const volVectorField& U) const
 }
 
 
-void Foam::coagulationCloud::checkStartTime() const
+void Foam::coagulation::coagulationCloud::checkStartTime() const
 {
     const Time& runTime = mesh_.time();
 
@@ -246,7 +249,7 @@ void Foam::coagulationCloud::checkStartTime() const
 }
 
 
-void Foam::coagulationCloud::checkParticles() const
+void Foam::coagulation::coagulationCloud::checkParticles() const
 {
     const label nCells = mesh_.nCells();
     const label nFaces = mesh_.nFaces();
@@ -289,7 +292,10 @@ void Foam::coagulationCloud::checkParticles() const
 }
 
 
-void Foam::coagulationCloud::checkFlow(const volVectorField& U) const
+void Foam::coagulation::coagulationCloud::checkFlow
+(
+    const volVectorField& U
+) const
 {
     caseChecks::velocity(U);
     caseChecks::emptyPatches(mesh_);
@@ -308,7 +314,7 @@ void Foam::coagulationCloud::checkFlow(const volVectorField& U) const
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::coagulationCloud::completeWrite()
+void Foam::coagulation::coagulationCloud::completeWrite()
 {
     if (pendingWrite_.empty())
     {

@@ -10,7 +10,7 @@
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::statisticalScaling::statisticalScaling
+Foam::coagulation::statisticalScaling::statisticalScaling
 (
     const dictionary& dict,
     const word& algorithm,

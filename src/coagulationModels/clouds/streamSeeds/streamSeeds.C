@@ -11,7 +11,11 @@
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::streamSeeds::streamSeeds(const dictionary& dict, const Time& time)
+Foam::coagulation::streamSeeds::streamSeeds
+(
+    const dictionary& dict,
+    const Time& time
+)
 :
     time_(time),
     seed_(0)
@@ -29,7 +33,7 @@ Foam::streamSeeds::streamSeeds(const dictionary& dict, const Time& time)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-uint64_t Foam::streamSeeds::operator()
+uint64_t Foam::coagulation::streamSeeds::operator()
 (
     const label index,
     const purpose p

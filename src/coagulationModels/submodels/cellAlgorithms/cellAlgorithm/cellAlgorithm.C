@@ -13,14 +13,17 @@
 
 namespace Foam
 {
+namespace coagulation
+{
     defineTypeNameAndDebug(cellAlgorithm, 0);
     defineRunTimeSelectionTable(cellAlgorithm, components);
+}
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::cellAlgorithm::cellAlgorithm
+Foam::coagulation::cellAlgorithm::cellAlgorithm
 (
     const std::string& coreName,
     const coagulationKernel& kernel,
@@ -37,7 +40,8 @@ Foam::cellAlgorithm::cellAlgorithm
 
 // * * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
 
-Foam::autoPtr<Foam::cellAlgorithm> Foam::cellAlgorithm::New
+Foam::autoPtr<Foam::coagulation::cellAlgorithm>
+Foam::coagulation::cellAlgorithm::New
 (
     const word& algorithmType,
     const dictionary& dict,
@@ -65,7 +69,8 @@ Foam::autoPtr<Foam::cellAlgorithm> Foam::cellAlgorithm::New
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::autoPtr<Foam::cellAlgorithm> Foam::cellAlgorithm::clone() const
+Foam::autoPtr<Foam::coagulation::cellAlgorithm>
+Foam::coagulation::cellAlgorithm::clone() const
 {
     // The type is in the table: this object was constructed from it
     return autoPtr<cellAlgorithm>

@@ -45,11 +45,14 @@ Description
 
 namespace Foam
 {
+namespace coagulation
+{
 namespace cellAlgorithms
 {
     makeCoreCellAlgorithm(SWA, false)
     makeCoreCellAlgorithm(DSA1, true)
     makeCoreCellAlgorithm(DSA2, true)
+}
 }
 }
 

@@ -13,14 +13,17 @@
 
 namespace Foam
 {
+namespace coagulation
+{
     defineTypeNameAndDebug(coagulationKernel, 0);
     defineRunTimeSelectionTable(coagulationKernel, dictionary);
+}
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::coagulationKernel::coagulationKernel
+Foam::coagulation::coagulationKernel::coagulationKernel
 (
     const dictionary& dict,
     const std::string& coreName
@@ -43,7 +46,7 @@ Foam::coagulationKernel::coagulationKernel
 }
 
 
-Foam::coagulationKernel::coagulationKernel
+Foam::coagulation::coagulationKernel::coagulationKernel
 (
     const scalar K0,
     std::unique_ptr<coag::CoagulationKernel> core
@@ -56,7 +59,8 @@ Foam::coagulationKernel::coagulationKernel
 
 // * * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
 
-Foam::autoPtr<Foam::coagulationKernel> Foam::coagulationKernel::New
+Foam::autoPtr<Foam::coagulation::coagulationKernel>
+Foam::coagulation::coagulationKernel::New
 (
     const dictionary& dict,
     const fvMesh& mesh

@@ -43,12 +43,15 @@ Description
 
 namespace Foam
 {
+namespace coagulation
+{
 namespace coagulationKernels
 {
     makeCoreCoagulationKernel(constant)
     makeCoreCoagulationKernel(additive)
     makeCoreCoagulationKernel(multiplicative)
     makeCoreCoagulationKernel(saffmanTurner)
+}
 }
 }
 

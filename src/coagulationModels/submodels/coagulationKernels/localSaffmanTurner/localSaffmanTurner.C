@@ -14,6 +14,8 @@
 
 namespace Foam
 {
+namespace coagulation
+{
 namespace coagulationKernels
 {
     defineTypeNameAndDebug(localSaffmanTurner, 0);
@@ -23,6 +25,7 @@ namespace coagulationKernels
         localSaffmanTurner,
         dictionary
     );
+}
 }
 }
 
@@ -35,7 +38,8 @@ namespace
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::scalar Foam::coagulationKernels::localSaffmanTurner::readCoefficient
+Foam::scalar
+Foam::coagulation::coagulationKernels::localSaffmanTurner::readCoefficient
 (
     const dictionary& dict
 )
@@ -45,7 +49,8 @@ Foam::scalar Foam::coagulationKernels::localSaffmanTurner::readCoefficient
 }
 
 
-Foam::scalar Foam::coagulationKernels::localSaffmanTurner::uniformNu
+Foam::scalar
+Foam::coagulation::coagulationKernels::localSaffmanTurner::uniformNu
 (
     const dictionary& dict,
     const fvMesh& mesh
@@ -114,7 +119,7 @@ Foam::scalar Foam::coagulationKernels::localSaffmanTurner::uniformNu
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::coagulationKernels::localSaffmanTurner::localSaffmanTurner
+Foam::coagulation::coagulationKernels::localSaffmanTurner::localSaffmanTurner
 (
     const dictionary& dict,
     const fvMesh& mesh

@@ -13,16 +13,19 @@
 
 namespace Foam
 {
+namespace coagulation
+{
 namespace dispersionModels
 {
     defineTypeNameAndDebug(brownianDispersion, 0);
     addToRunTimeSelectionTable(dispersionModel, brownianDispersion, dictionary);
 }
 }
+}
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::dispersionModels::brownianDispersion::brownianDispersion
+Foam::coagulation::dispersionModels::brownianDispersion::brownianDispersion
 (
     const dictionary& dict,
     const fvMesh& mesh
@@ -35,7 +38,8 @@ Foam::dispersionModels::brownianDispersion::brownianDispersion
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::scalar Foam::dispersionModels::brownianDispersion::diffusivity
+Foam::scalar
+Foam::coagulation::dispersionModels::brownianDispersion::diffusivity
 (
     const coagulationParticle& p,
     vector&

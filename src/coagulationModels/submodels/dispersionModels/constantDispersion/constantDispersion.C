@@ -13,16 +13,19 @@
 
 namespace Foam
 {
+namespace coagulation
+{
 namespace dispersionModels
 {
     defineTypeNameAndDebug(constantDispersion, 0);
     addToRunTimeSelectionTable(dispersionModel, constantDispersion, dictionary);
 }
 }
+}
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::dispersionModels::constantDispersion::constantDispersion
+Foam::coagulation::dispersionModels::constantDispersion::constantDispersion
 (
     const dictionary& dict,
     const fvMesh& mesh
@@ -38,7 +41,8 @@ Foam::dispersionModels::constantDispersion::constantDispersion
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::scalar Foam::dispersionModels::constantDispersion::diffusivity
+Foam::scalar
+Foam::coagulation::dispersionModels::constantDispersion::diffusivity
 (
     const coagulationParticle&,
     vector&

@@ -13,14 +13,17 @@
 
 namespace Foam
 {
+namespace coagulation
+{
     defineTypeNameAndDebug(dispersionModel, 0);
     defineRunTimeSelectionTable(dispersionModel, dictionary);
+}
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::dispersionModel::dispersionModel(const fvMesh& mesh)
+Foam::coagulation::dispersionModel::dispersionModel(const fvMesh& mesh)
 :
     mesh_(mesh),
     cellStickFaces_(mesh.nCells())
@@ -29,7 +32,8 @@ Foam::dispersionModel::dispersionModel(const fvMesh& mesh)
 
 // * * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
 
-Foam::autoPtr<Foam::dispersionModel> Foam::dispersionModel::New
+Foam::autoPtr<Foam::coagulation::dispersionModel>
+Foam::coagulation::dispersionModel::New
 (
     const dictionary& dict,
     const fvMesh& mesh
@@ -58,7 +62,7 @@ Foam::autoPtr<Foam::dispersionModel> Foam::dispersionModel::New
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::dispersionModel::setStickWalls(const boolList& stick)
+void Foam::coagulation::dispersionModel::setStickWalls(const boolList& stick)
 {
     const polyBoundaryMesh& patches = mesh_.boundaryMesh();
     List<DynamicList<label>> near(mesh_.nCells());
@@ -91,7 +95,7 @@ void Foam::dispersionModel::setStickWalls(const boolList& stick)
 }
 
 
-Foam::vector Foam::dispersionModel::displacement
+Foam::vector Foam::coagulation::dispersionModel::displacement
 (
     const coagulationParticle& p,
     const scalar dt,
@@ -165,7 +169,7 @@ Foam::vector Foam::dispersionModel::displacement
 }
 
 
-coag::BrownianGas Foam::dispersionModel::readBrownianGas
+coag::BrownianGas Foam::coagulation::dispersionModel::readBrownianGas
 (
     const dictionary& dict,
     const wordList& otherKeys

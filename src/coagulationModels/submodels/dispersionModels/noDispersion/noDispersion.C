@@ -13,16 +13,19 @@
 
 namespace Foam
 {
+namespace coagulation
+{
 namespace dispersionModels
 {
     defineTypeNameAndDebug(noDispersion, 0);
     addToRunTimeSelectionTable(dispersionModel, noDispersion, dictionary);
 }
 }
+}
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::dispersionModels::noDispersion::noDispersion
+Foam::coagulation::dispersionModels::noDispersion::noDispersion
 (
     const dictionary& dict,
     const fvMesh& mesh
@@ -36,7 +39,7 @@ Foam::dispersionModels::noDispersion::noDispersion
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::scalar Foam::dispersionModels::noDispersion::diffusivity
+Foam::scalar Foam::coagulation::dispersionModels::noDispersion::diffusivity
 (
     const coagulationParticle&,
     vector&

@@ -16,16 +16,19 @@
 
 namespace Foam
 {
+namespace coagulation
+{
 namespace dispersionModels
 {
     defineTypeNameAndDebug(turbulentDispersion, 0);
     addToRunTimeSelectionTable(dispersionModel, turbulentDispersion, dictionary);
 }
 }
+}
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::dispersionModels::turbulentDispersion::turbulentDispersion
+Foam::coagulation::dispersionModels::turbulentDispersion::turbulentDispersion
 (
     const dictionary& dict,
     const fvMesh& mesh
@@ -72,7 +75,8 @@ Foam::dispersionModels::turbulentDispersion::turbulentDispersion
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::scalar Foam::dispersionModels::turbulentDispersion::diffusivity
+Foam::scalar
+Foam::coagulation::dispersionModels::turbulentDispersion::diffusivity
 (
     const coagulationParticle& p,
     vector& drift

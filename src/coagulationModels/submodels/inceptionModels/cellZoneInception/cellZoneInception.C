@@ -10,15 +10,18 @@
 
 namespace Foam
 {
+namespace coagulation
+{
 namespace inceptionModels
 {
     defineTypeNameAndDebug(cellZone, 0);
     addToRunTimeSelectionTable(inceptionModel, cellZone, dictionary);
 }
 }
+}
 
 
-Foam::inceptionModels::cellZone::cellZone
+Foam::coagulation::inceptionModels::cellZone::cellZone
 (
     const dictionary& dict,
     const fvMesh& mesh,

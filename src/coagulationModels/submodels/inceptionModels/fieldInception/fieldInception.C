@@ -13,17 +13,20 @@
 
 namespace Foam
 {
+namespace coagulation
+{
 namespace inceptionModels
 {
     defineTypeNameAndDebug(field, 0);
     addToRunTimeSelectionTable(inceptionModel, field, dictionary);
 }
 }
+}
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::inceptionModels::field::field
+Foam::coagulation::inceptionModels::field::field
 (
     const dictionary& dict,
     const fvMesh& mesh,

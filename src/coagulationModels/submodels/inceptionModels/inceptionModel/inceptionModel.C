@@ -12,14 +12,17 @@
 
 namespace Foam
 {
+namespace coagulation
+{
     defineTypeNameAndDebug(inceptionModel, 0);
     defineRunTimeSelectionTable(inceptionModel, dictionary);
+}
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::inceptionModel::inceptionModel
+Foam::coagulation::inceptionModel::inceptionModel
 (
     const dictionary& dict,
     const scalar particleWeight,
@@ -44,7 +47,8 @@ Foam::inceptionModel::inceptionModel
 
 // * * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
 
-Foam::autoPtr<Foam::inceptionModel> Foam::inceptionModel::New
+Foam::autoPtr<Foam::coagulation::inceptionModel>
+Foam::coagulation::inceptionModel::New
 (
     const dictionary& dict,
     const fvMesh& mesh,
@@ -77,7 +81,10 @@ Foam::autoPtr<Foam::inceptionModel> Foam::inceptionModel::New
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::label Foam::inceptionModel::nCells(const label nMeshCells) const
+Foam::label Foam::coagulation::inceptionModel::nCells
+(
+    const label nMeshCells
+) const
 {
     label n = 0;
     for (label celli = 0; celli < nMeshCells; ++celli)

@@ -10,15 +10,18 @@
 
 namespace Foam
 {
+namespace coagulation
+{
 namespace inceptionModels
 {
     defineTypeNameAndDebug(uniform, 0);
     addToRunTimeSelectionTable(inceptionModel, uniform, dictionary);
 }
 }
+}
 
 
-Foam::inceptionModels::uniform::uniform
+Foam::coagulation::inceptionModels::uniform::uniform
 (
     const dictionary& dict,
     const fvMesh&,

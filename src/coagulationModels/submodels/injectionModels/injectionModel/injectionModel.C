@@ -11,14 +11,17 @@
 
 namespace Foam
 {
+namespace coagulation
+{
     defineTypeNameAndDebug(injectionModel, 0);
     defineRunTimeSelectionTable(injectionModel, dictionary);
+}
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::injectionModel::injectionModel(coagulationCloud& cloud)
+Foam::coagulation::injectionModel::injectionModel(coagulationCloud& cloud)
 :
     cloud_(cloud)
 {}
@@ -26,7 +29,8 @@ Foam::injectionModel::injectionModel(coagulationCloud& cloud)
 
 // * * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
 
-Foam::autoPtr<Foam::injectionModel> Foam::injectionModel::New
+Foam::autoPtr<Foam::coagulation::injectionModel>
+Foam::coagulation::injectionModel::New
 (
     const dictionary& dict,
     coagulationCloud& cloud

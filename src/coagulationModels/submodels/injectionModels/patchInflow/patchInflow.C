@@ -15,17 +15,20 @@
 
 namespace Foam
 {
+namespace coagulation
+{
 namespace injectionModels
 {
     defineTypeNameAndDebug(patchInflow, 0);
     addToRunTimeSelectionTable(injectionModel, patchInflow, dictionary);
 }
 }
+}
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::injectionModels::patchInflow::patchInflow
+Foam::coagulation::injectionModels::patchInflow::patchInflow
 (
     const dictionary& dict,
     coagulationCloud& cloud
@@ -71,7 +74,7 @@ Foam::injectionModels::patchInflow::patchInflow
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::injectionModels::patchInflow::checkFlow
+void Foam::coagulation::injectionModels::patchInflow::checkFlow
 (
     const volVectorField& U
 ) const
@@ -106,7 +109,7 @@ void Foam::injectionModels::patchInflow::checkFlow
 }
 
 
-void Foam::injectionModels::patchInflow::inject
+void Foam::coagulation::injectionModels::patchInflow::inject
 (
     const volVectorField& U,
     const scalar dt,

@@ -13,6 +13,8 @@
 
 namespace Foam
 {
+namespace coagulation
+{
 namespace patchInteractionModels
 {
     defineTypeNameAndDebug(localInteraction, 0);
@@ -24,11 +26,12 @@ namespace patchInteractionModels
     );
 }
 }
+}
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::patchInteractionModels::localInteraction::localInteraction
+Foam::coagulation::patchInteractionModels::localInteraction::localInteraction
 (
     const dictionary& dict,
     const polyMesh& mesh

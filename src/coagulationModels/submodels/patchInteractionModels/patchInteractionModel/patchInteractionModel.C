@@ -11,14 +11,20 @@
 
 namespace Foam
 {
+namespace coagulation
+{
     defineTypeNameAndDebug(patchInteractionModel, 0);
     defineRunTimeSelectionTable(patchInteractionModel, dictionary);
+}
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::patchInteractionModel::patchInteractionModel(const polyMesh& mesh)
+Foam::coagulation::patchInteractionModel::patchInteractionModel
+(
+    const polyMesh& mesh
+)
 :
     stick_(mesh.boundaryMesh().size(), false)
 {}
@@ -26,7 +32,8 @@ Foam::patchInteractionModel::patchInteractionModel(const polyMesh& mesh)
 
 // * * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
 
-Foam::autoPtr<Foam::patchInteractionModel> Foam::patchInteractionModel::New
+Foam::autoPtr<Foam::coagulation::patchInteractionModel>
+Foam::coagulation::patchInteractionModel::New
 (
     const dictionary& dict,
     const polyMesh& mesh

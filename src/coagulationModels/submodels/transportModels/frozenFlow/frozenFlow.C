@@ -20,14 +20,17 @@
 
 namespace Foam
 {
+namespace coagulation
+{
 namespace transportModels
 {
     defineTypeNameAndDebug(frozenFlow, 0);
     addToRunTimeSelectionTable(transportModel, frozenFlow, dictionary);
 }
 }
+}
 
-int Foam::transportModels::frozenFlow::cloudMove
+int Foam::coagulation::transportModels::frozenFlow::cloudMove
 (
     Foam::debug::optimisationSwitch("coagulationCloudMove", 0)
 );
@@ -35,13 +38,13 @@ registerOptSwitch
 (
     "coagulationCloudMove",
     int,
-    Foam::transportModels::frozenFlow::cloudMove
+    Foam::coagulation::transportModels::frozenFlow::cloudMove
 );
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::transportModels::frozenFlow::frozenFlow
+Foam::coagulation::transportModels::frozenFlow::frozenFlow
 (
     const dictionary& dict,
     coagulationCloud& cloud
@@ -102,7 +105,7 @@ Foam::transportModels::frozenFlow::frozenFlow
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::transportModels::frozenFlow::moveOnThreads
+void Foam::coagulation::transportModels::frozenFlow::moveOnThreads
 (
     const volVectorField& U,
     coagulationParticle::trackingData& td,
@@ -253,7 +256,7 @@ void Foam::transportModels::frozenFlow::moveOnThreads
 }
 
 
-Foam::label Foam::transportModels::frozenFlow::exchange
+Foam::label Foam::coagulation::transportModels::frozenFlow::exchange
 (
     const DynamicList<coagulationParticle*>& leaving,
     coagulationParticle::trackingData& td,
@@ -363,7 +366,7 @@ Foam::label Foam::transportModels::frozenFlow::exchange
 }
 
 
-Foam::vector Foam::transportModels::frozenFlow::walkStep
+Foam::vector Foam::coagulation::transportModels::frozenFlow::walkStep
 (
     const coagulationParticle& p,
     const label k,
@@ -378,7 +381,7 @@ Foam::vector Foam::transportModels::frozenFlow::walkStep
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::transportModels::frozenFlow::move
+void Foam::coagulation::transportModels::frozenFlow::move
 (
     const volVectorField& U,
     const scalar dt,

@@ -11,14 +11,17 @@
 
 namespace Foam
 {
+namespace coagulation
+{
     defineTypeNameAndDebug(transportModel, 0);
     defineRunTimeSelectionTable(transportModel, dictionary);
+}
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::transportModel::transportModel(coagulationCloud& cloud)
+Foam::coagulation::transportModel::transportModel(coagulationCloud& cloud)
 :
     cloud_(cloud)
 {}
@@ -26,7 +29,8 @@ Foam::transportModel::transportModel(coagulationCloud& cloud)
 
 // * * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
 
-Foam::autoPtr<Foam::transportModel> Foam::transportModel::New
+Foam::autoPtr<Foam::coagulation::transportModel>
+Foam::coagulation::transportModel::New
 (
     const dictionary& dict,
     coagulationCloud& cloud

@@ -15,7 +15,7 @@
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::initialPopulation::initialPopulation
+Foam::coagulation::initialPopulation::initialPopulation
 (
     const dictionary& dict,
     const coagulationCloud& cloud
@@ -139,7 +139,10 @@ Foam::initialPopulation::initialPopulation
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::label Foam::initialPopulation::create(coagulationCloud& cloud) const
+Foam::label Foam::coagulation::initialPopulation::create
+(
+    coagulationCloud& cloud
+) const
 {
     const fvMesh& mesh = cloud.mesh();
     const scalar W = cloud.scaling().particleWeight();
