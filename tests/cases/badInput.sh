@@ -146,4 +146,32 @@ echo "ok stopAt nextWrite runs to the first write"
 (cd "$base" && foamDictionary constant/coagulationProperties -entry algorithm -set DSA1 > /dev/null)
 expectFatal dsaNumberControl   "maxParticlesPerCell" -entry numberControl -set "{ maxParticlesPerCell 100; }"
 
+# expectFatalEdit name expectedText fileToEdit sedOrAppend: a case edited by hand (what
+# foamDictionary cannot write: a duplicate entry, a field's dimensions)
+expectFatalEdit()
+{
+    local name="$1" expected="$2" edited="$3" edit="$4"
+    local case="$workDir/badInput_$name"
+    rm -rf "$case"; cp -r "$base" "$case"
+    case "$edit" in
+        s/*) sed -i "$edit" "$case/$edited" ;;
+        *) echo "$edit" >> "$case/$edited" ;;
+    esac
+    if coagulationFoam -case "$case" > "$case/log" 2>&1; then
+        fail "$name: coagulationFoam accepted bad input"
+    fi
+    grep -q "FOAM FATAL IO ERROR" "$case/log" || { tail -20 "$case/log"; fail "$name: no FatalIOError"; }
+    grep -q -- "$expected" "$case/log" || { tail -20 "$case/log"; fail "$name: error does not name '$expected'"; }
+    grep -q "$(basename "$edited")" "$case/log" || fail "$name: error does not name the file"
+    passed=$((passed + 1))
+    echo "ok $name"
+}
+# A duplicate entry is refused, not silently the last one (a scalar, a sub-dictionary)
+expectFatalEdit duplicateSeed   "duplicate entry: seed"   constant/coagulationProperties "seed 7;"
+expectFatalEdit duplicateKernel "duplicate entry: kernel" constant/coagulationProperties "kernel { type constant; K0 2e-5; }"
+# U must be a velocity
+expectFatalEdit dimensionsU     "dimensions"              0/U "s/^dimensions .*/dimensions [0 1 0 0 0 0 0];/"
+# The split steps are of the fixed deltaT: a Courant-limited step is refused, not ignored
+expectFatalEdit adjustTimeStep  "adjustTimeStep"          system/controlDict "adjustTimeStep yes; maxCo 0.5;"
+
 echo "PASS bad input: $passed cases give a FatalIOError naming the entry"

@@ -6,6 +6,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "caseChecks.H"
+#include "IFstream.H"
 #include "fvMesh.H"
 #include "fvc.H"
 #include "emptyPolyPatch.H"
@@ -159,8 +160,39 @@ Foam::autoPtr<Foam::volScalarField> Foam::coagulation::caseChecks::cellField
 }
 
 
+void Foam::coagulation::caseChecks::noDuplicates(const IOdictionary& dict)
+{
+    // The top-level read (IOdictionary, operator>>) resets the input mode to
+    // merge; dictionary::read does not, so the scan below reads the file as
+    // "#inputMode error" does: a second entry of a key in one dictionary is a
+    // FatalIOError naming it, the file and the line
+    IFstream is(dict.objectPath());
+    if (!is.good())
+    {
+        return;   // read from elsewhere (a stream, the master): checked there
+    }
+    const entry::inputMode saved = entry::globalInputMode;
+    entry::globalInputMode = entry::inputMode::ERROR;
+    dictionary scan;
+    scan.read(is, false);
+    entry::globalInputMode = saved;
+}
+
+
 void Foam::coagulation::caseChecks::velocity(const volVectorField& U)
 {
+    if (U.dimensions() != dimVelocity)
+    {
+        FatalIOError
+        (
+            FUNCTION_NAME, __FILE__, __LINE__, U.objectPath(), -1, -1
+        )   << "Field U in " << U.objectPath() << " has dimensions "
+            << U.dimensions() << "; a velocity has " << dimVelocity
+            << " (m/s)." << nl
+            << "    Correct the 'dimensions' entry of the file" << nl
+            << exit(FatalIOError);
+    }
+
     auto check = [&U](const vectorField& values, const word& where)
     {
         forAll(values, i)
@@ -282,6 +314,20 @@ void Foam::coagulation::caseChecks::courant(const volVectorField& U)
 
 void Foam::coagulation::caseChecks::timeControls(const Time& runTime)
 {
+    // The split step is of the fixed deltaT (the statistics' sample times,
+    // the restarts and the Courant check assume it): a Courant-limited step
+    // that a transient solver's user sets by habit is refused, not ignored
+    if (runTime.controlDict().getOrDefault<bool>("adjustTimeStep", false))
+    {
+        FatalIOErrorInFunction(runTime.controlDict())
+            << "Entry 'adjustTimeStep' is on in "
+            << runTime.controlDict().name() << ": coagulationFoam takes"
+            << " fixed steps of deltaT." << nl
+            << "    Remove the entry (or set it to no) and choose deltaT so"
+            << " that the Courant number stays below 1 (the solver checks it)"
+            << nl << exit(FatalIOError);
+    }
+
     const scalar deltaT = runTime.deltaTValue();
     const scalar start = runTime.startTime().value();
     const scalar end = runTime.endTime().value();

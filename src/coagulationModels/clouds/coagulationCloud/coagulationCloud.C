@@ -99,7 +99,9 @@ Foam::coagulation::coagulationCloud::coagulationCloud
     timer_(),
     pendingWrite_()
 {
-    // Every entry is checked: an unknown keyword is a typo, not a default
+    // Every entry is checked: an entry given twice is refused (OpenFOAM
+    // would keep the last one), an unknown keyword is a typo, not a default
+    caseChecks::noDuplicates(properties_);
     caseChecks::keywords
     (
         properties_,
