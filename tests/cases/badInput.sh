@@ -16,12 +16,20 @@ expectFatal()
     local case="$workDir/badInput_$name"
     rm -rf "$case"; cp -r "$base" "$case"
     (cd "$case" && foamDictionary "$file" "$@" > /dev/null)
+    checkFatal "$name" "$expected" "$case" "$file"
+}
+
+# checkFatal name expectedText case editedFile: the run stops with a FatalIOError naming
+# the text and the file
+checkFatal()
+{
+    local name="$1" expected="$2" case="$3" edited="$4"
     if coagulationFoam -case "$case" > "$case/log" 2>&1; then
         fail "$name: coagulationFoam accepted bad input"
     fi
     grep -q "FOAM FATAL IO ERROR" "$case/log" || { tail -20 "$case/log"; fail "$name: no FatalIOError"; }
     grep -q -- "$expected" "$case/log" || { tail -20 "$case/log"; fail "$name: error does not name '$expected'"; }
-    grep -q "$(basename "$file")" "$case/log" || fail "$name: error does not name the file"
+    grep -q "$(basename "$edited")" "$case/log" || fail "$name: error does not name the file"
     passed=$((passed + 1))
     echo "ok $name"
 }
@@ -157,14 +165,7 @@ expectFatalEdit()
         s/*) sed -i "$edit" "$case/$edited" ;;
         *) echo "$edit" >> "$case/$edited" ;;
     esac
-    if coagulationFoam -case "$case" > "$case/log" 2>&1; then
-        fail "$name: coagulationFoam accepted bad input"
-    fi
-    grep -q "FOAM FATAL IO ERROR" "$case/log" || { tail -20 "$case/log"; fail "$name: no FatalIOError"; }
-    grep -q -- "$expected" "$case/log" || { tail -20 "$case/log"; fail "$name: error does not name '$expected'"; }
-    grep -q "$(basename "$edited")" "$case/log" || fail "$name: error does not name the file"
-    passed=$((passed + 1))
-    echo "ok $name"
+    checkFatal "$name" "$expected" "$case" "$edited"
 }
 # A duplicate entry is refused, not silently the last one (a scalar, a sub-dictionary)
 expectFatalEdit duplicateSeed   "duplicate entry: seed"   constant/coagulationProperties "seed 7;"
