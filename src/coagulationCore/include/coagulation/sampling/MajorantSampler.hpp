@@ -37,8 +37,7 @@ namespace coag {
 //  integer sums updated by one add per level): cost per event O(#terms + log N). When both
 //  factors of a term are tree columns the two walks go down together
 //  (QuantizedSumTree::samplePair), so that their cache misses overlap; the same random numbers
-//  and leaves as two walks one after the other. (A store binned by half-octave was measured
-//  against the tree and not kept: doc/performance.md.)
+//  and leaves as two walks one after the other.
 //  No allocation per event (append() doubles the capacity when full, as the tree does).
 //
 //  Invariant: after build(), leaf j of the store holds the columns of particle j for
