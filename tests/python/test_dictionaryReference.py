@@ -78,6 +78,8 @@ SECTIONS = {
     (MODELS + "submodels/coagulationKernels/localSaffmanTurner/localSaffmanTurner.C",
      "readCoefficient", 0):
         [("kernel", "localSaffmanTurner")],
+    (MODELS + "submodels/coagulationKernels/noCoagulation/noCoagulation.C", "noCoagulation", 0):
+        [("kernel", "none")],
     (MODELS + "submodels/inceptionModels/uniformInception/uniformInception.C", "uniform", 0):
         [("inception", "uniform")],
     (MODELS + "submodels/inceptionModels/cellZoneInception/cellZoneInception.C", "cellZone", 0):

@@ -44,8 +44,8 @@ void MajorantSampler::configure(const CoagulationKernel& kernel, const std::stri
     kernel_ = &kernel;
     const int nb = kernel.nBasis();
     const std::vector<MajorantTerm>& terms = kernel.majorantTerms();
-    if (nb <= 0 || terms.empty()) {
-        throw std::invalid_argument(who + ": kernel '" + kernel.name() + "' has no majorant terms");
+    if (nb <= 0) {
+        throw std::invalid_argument(who + ": kernel '" + kernel.name() + "' has no basis function");
     }
     if (static_cast<std::size_t>(nb) > maxBasis || terms.size() > maxTerms) {
         throw std::invalid_argument(who + ": kernel '" + kernel.name() + "' has "
@@ -74,7 +74,8 @@ void MajorantSampler::configure(const CoagulationKernel& kernel, const std::stri
         ++nTerms_;
     }
     std::fill_n(termRate_, maxTerms, 0.0);
-    lastTerm_ = nTerms_ - 1;
+    // No term (K = 0): rateSum() is zero and no pair is ever proposed
+    lastTerm_ = nTerms_ > 0 ? nTerms_ - 1 : 0;
     std::fill_n(leaf_, QuantizedSumTree::maxColumns, 0.0);
     std::fill_n(columnTotals_, QuantizedSumTree::maxColumns, 0.0);
 }

@@ -21,7 +21,8 @@ struct MajorantTerm {
 //- Symmetric coagulation kernel K(z1,z2) with a majorant in product-sum form
 //      Khat(z1,z2) = sum_t coeff_t phi_{first_t}(z1) phi_{second_t}(z2) >= K(z1,z2),
 //  with basis functions phi_b >= 0 and coeff_t > 0. The particle algorithms select pairs
-//  from Khat and accept with probability K/Khat (fictitious jumps otherwise).
+//  from Khat and accept with probability K/Khat (fictitious jumps otherwise). A majorant
+//  without terms is K = 0 (NoCoagulationKernel).
 class CoagulationKernel {
 public:
     virtual ~CoagulationKernel() = default;
@@ -110,6 +111,21 @@ public:
     int nBasis() const override { return 4; }
     void basis(const ParticleType& z, double* phi) const override;
     bool constantBasis(int b) const override { return b == 0; }
+};
+
+//- K = 0: no coagulation (inception, transport and growth alone). Its majorant has no
+//  term, so the algorithms' pair rate is zero and only inception makes events.
+class NoCoagulationKernel : public CoagulationKernel {
+public:
+    std::string name() const override { return "none"; }
+    double operator()(const ParticleType&, const ParticleType&) const override { return 0.0; }
+    int nBasis() const override { return 1; }
+    void basis(const ParticleType&, double* phi) const override { phi[0] = 1.0; }
+    const std::vector<MajorantTerm>& majorantTerms() const override { return noTerms_; }
+    bool constantBasis(int) const override { return true; }
+
+private:
+    std::vector<MajorantTerm> noTerms_;
 };
 
 //- K0 of the Saffman–Turner kernel (1.2)/(5.2) from the mean dissipation rate epsilon-bar,

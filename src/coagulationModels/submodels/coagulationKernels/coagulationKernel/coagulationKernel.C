@@ -38,7 +38,8 @@ Foam::coagulation::coagulationKernel::coagulationKernel
     {
         FatalIOErrorInFunction(dict)
             << "Kernel coefficient K0 = " << K0_ << " in " << dict.name()
-            << " must be positive and finite" << nl
+            << " must be positive and finite (for no coagulation:"
+            << " 'type none;')" << nl
             << exit(FatalIOError);
     }
 
