@@ -44,6 +44,8 @@ expectFatal missingKernel      "kernel"           -entry kernel -remove
 expectFatal unknownKernel      "quadratic"        -entry kernel/type -set quadratic
 expectFatal missingK0          "K0"               -entry kernel/K0 -remove
 expectFatal negativeK0         "K0"               -entry kernel/K0 -set -1
+expectFatal zeroK0             "type none"        -entry kernel/K0 -set 0
+expectFatal noneWithK0         "Unknown entry 'K0'" -entry kernel -set "{ type none; K0 1e-5; }"
 expectFatal negativeRate       "rate"             -entry inception/rate -set -3e8
 expectFatal missingRate        "rate"             -entry inception/rate -remove
 expectFatal zeroMass           "mass"             -entry inception/mass -set 0

@@ -229,4 +229,179 @@ if want otherMesh; then
     expectError "$c" "another mesh" "positions"
 fi
 
+# 10. A restart from times written with writeFormat ascii and writePrecision 3: the particle
+#     fields, the fields the run reads (U) and the restart records are written at full
+#     precision whatever the controlDict says, so the run restarted from 0.005 writes at 0.01
+#     the same particles as the run that went on
+if want precision; then
+    c=$(copyCase precision)
+    setEntry "$c" system/controlDict writeFormat ascii
+    setEntry "$c" system/controlDict writePrecision 3
+    # a velocity that 3 digits would round (foamDictionary writes 6)
+    sed -i 's/uniform (1 0 0)/uniform (1.23456789012345 0 0)/' "$c/0/U"
+    expectRun "$c"
+    r=$(copyCase precisionRestart)
+    rm -rf "$r"/0.0* "$r/postProcessing"; cp -r "$c/0.005" "$r/0.005"
+    cp "$c/system/controlDict" "$r/system/controlDict"
+    grep -q "1.23456789012345" "$c/0.005/U" || fail "precision: 0.005/U written with few digits"
+    expectRun "$r"
+    grep -q "Create mesh for time = 0.005" "$r/log" || fail "precision: did not restart from 0.005"
+    for f in mass weight coordinates; do
+        cmp -s "$c/0.01/lagrangian/coagulationCloud/$f" "$r/0.01/lagrangian/coagulationCloud/$f" \
+            || fail "precision: 0.01/lagrangian/coagulationCloud/$f of the restart differs"
+    done
+    awk '/^[0-9.e+-]+$/ && NR > 20 { if (length($1) < 10) bad = 1 } END { exit bad }' \
+        "$c/0.005/lagrangian/coagulationCloud/weight" || fail "precision: weights written with few digits"
+fi
+
+# 11. A run that ends before tRelax: said at the start; the tools say why they have nothing
+#     to average and exit non-zero
+if want beforeTRelax; then
+    c=$(copyCase beforeTRelax)
+    expectRun "$c"
+    grep -q "no time average" "$c/log" || fail "beforeTRelax: the solver does not warn"
+    for tool in "$report --case $c --no-plots" \
+                "$COAGULATIONFOAM_PYTHON $COAGULATIONFOAM_DIR/applications/utilities/coagulationProfiles/coagulationProfiles.py --case $c --no-plots"; do
+        rc=0; $tool > "$c/log.tool" 2>&1 || rc=$?
+        [ "$rc" -eq 2 ] || { cat "$c/log.tool"; fail "beforeTRelax: $tool exit $rc, expected 2"; }
+        grep -q "tRelax" "$c/log.tool" && ! grep -q "Traceback\|RuntimeWarning" "$c/log.tool" \
+            || { cat "$c/log.tool"; fail "beforeTRelax: $tool does not say why"; }
+    done
+    passed=$((passed + 1)); echo "ok beforeTRelax: warned, tools exit 2 naming tRelax"
+fi
+
+# 12. A particle file of another time, or missing: named, with the latest whole time
+if want particleFiles; then
+    c=$(copyCase particleFiles)
+    expectRun "$c"
+    setEntry "$c" system/controlDict endTime 0.015
+    cp -r "$c/0.01" "$c/saved"
+    cp "$c/0.005/lagrangian/coagulationCloud/mass" "$c/0.01/lagrangian/coagulationCloud/mass"
+    expectError "$c" "0.01/lagrangian/coagulationCloud/mass" "particles" "0.005"
+    rm -rf "$c/0.01"; cp -r "$c/saved" "$c/0.01"
+    rm "$c/0.01/lagrangian/coagulationCloud/weight"
+    expectError "$c" "0.01/lagrangian/coagulationCloud/weight" "0.005"
+    rm -rf "$c/0.01"; mv "$c/saved" "$c/0.01"
+    expectRun "$c"
+fi
+
+# 13. SWA particles restarted under DSA: the restart is named as the cause
+if want algorithmChange; then
+    c=$(copyCase algorithmChange)
+    expectRun "$c"
+    setEntry "$c" system/controlDict endTime 0.015
+    setEntry "$c" constant/coagulationProperties algorithm DSA1
+    expectError "$c" "algorithm" "SWA" "DSA1" "restart"
+fi
+
+# 14. A cell of zero volume: refused at the start, pointing at checkMesh
+if want zeroVolume; then
+    c=$(copyCase zeroVolume)
+    # the points at the x of cell 10's left face moved onto its right face (in ascii)
+    setEntry "$c" system/controlDict writeFormat ascii
+    (cd "$c" && foamFormatConvert -constant -time none > log.foamFormatConvert 2>&1)
+    "$COAGULATIONFOAM_PYTHON" - "$c/constant/polyMesh/points" <<'EOF'
+import re, sys
+p = sys.argv[1]
+s = open(p).read()
+i = s.index("(", s.index("}"))
+pts = re.findall(r"\(([^()]*)\)", s[i + 1:])
+xs = sorted({float(q.split()[0]) for q in pts})
+x0, x1 = xs[10], xs[11]
+out = []
+for q in pts:
+    v = q.split()
+    if float(v[0]) == x0:
+        v[0] = repr(x1)
+    out.append("(" + " ".join(v) + ")")
+head = s[:i].rstrip()
+head = head[:head.rindex("\n")]          # drop the old count
+open(p, "w").write("%s\n%d\n(\n%s\n)\n" % (head, len(pts), "\n".join(out)))
+EOF
+    expectError "$c" "checkMesh" "volume"
+fi
+
+# 15. A process memory limit (ulimit -v) below what the particles need: refused at the start,
+#     naming statisticalWeight/n
+if want memoryLimit; then
+    c=$(copyCase memoryLimit)
+    setEntry "$c" constant/coagulationProperties statisticalWeight/n 1.5e6
+    setEntry "$c" system/controlDict endTime 0.2
+    rc=0
+    (ulimit -v 1000000; exec timeout 120 coagulationFoam -case "$c") > "$c/log" 2>&1 || rc=$?
+    [ "$rc" -ne 0 ] && [ "$rc" -lt 124 ] || { tail -20 "$c/log"; fail "memoryLimit: exit $rc, expected a fatal error"; }
+    grep -q "FOAM FATAL" "$c/log" && grep -q "statisticalWeight/n" "$c/log" && grep -q "ulimit" "$c/log" \
+        || { tail -20 "$c/log"; fail "memoryLimit: the error does not name statisticalWeight/n and the limit"; }
+    passed=$((passed + 1)); echo "ok memoryLimit: $(grep -m1 -A1 'FOAM FATAL' "$c/log" | tail -1 | cut -c1-150)"
+fi
+
+# 16. A file size limit (ulimit -f) with SIGXFSZ not ignored by the shell: the solver ignores
+#     it, so the write fails with EFBIG and takes the full-disk path; no temporary file left
+if want fileSizeLimit; then
+    c=$(copyCase fileSizeLimit)
+    setEntry "$c" system/controlDict endTime 0.05
+    setEntry "$c" system/controlDict writeInterval 0.01
+    setEntry "$c" constant/coagulationProperties statisticalWeight/n 32
+    setEntry "$c" constant/coagulationProperties sampling/sampleInterval 1e-4
+    rc=0
+    (trap - XFSZ; ulimit -f 300; exec timeout 120 coagulationFoam -case "$c") > "$c/log" 2>&1 || rc=$?
+    [ "$rc" -ne 0 ] && [ "$rc" -lt 124 ] || { tail -20 "$c/log"; fail "fileSizeLimit: exit $rc, expected a fatal error"; }
+    grep -q "Cannot write the samples" "$c/log" || { tail -20 "$c/log"; fail "fileSizeLimit: no message"; }
+    ! grep -A3 "Cannot write the samples" "$c/log" | grep -q '"' \
+        || { grep -A3 "Cannot write" "$c/log"; fail "fileSizeLimit: stray quotes in the message"; }
+    ! ls "$c"/postProcessing/coagulationSamples/*.tmp > /dev/null 2>&1 || fail "fileSizeLimit: a .tmp file left"
+    passed=$((passed + 1)); echo "ok fileSizeLimit"
+fi
+
+# 17. More threads than cores: a warning
+if want oversubscribed; then
+    c=$(copyCase oversubscribed)
+    OMP_NUM_THREADS=$(( $(nproc --all) + 1 )) expectRun "$c"
+    grep -q "more threads than" "$c/log" || fail "oversubscribed: no warning"
+fi
+
+# 18. A decomposed restart from a time one processor left half-written: one message, from
+#     the master, naming the processor and the time
+if want parallelHalfWritten; then
+    c=$(copyCase parallelHalfWritten)
+    (cd "$c" && decomposePar > log.decomposePar 2>&1)
+    rc=0; (cd "$c" && mpirun --oversubscribe -np 2 coagulationFoam -parallel > log 2>&1) || rc=$?
+    [ "$rc" -eq 0 ] || { tail -20 "$c/log"; fail "parallelHalfWritten: the first run failed"; }
+    rm "$c/processor1/0.01/uniform/coagulationCloudComplete"
+    setEntry "$c" system/controlDict endTime 0.015
+    rc=0; (cd "$c" && timeout 120 mpirun --oversubscribe -np 2 coagulationFoam -parallel > log 2>&1) || rc=$?
+    [ "$rc" -ne 0 ] && [ "$rc" -ne 124 ] || { tail -20 "$c/log"; fail "parallelHalfWritten: exit $rc"; }
+    [ "$(grep -c "is incomplete" "$c/log")" -eq 1 ] || { cat "$c/log"; fail "parallelHalfWritten: not one message"; }
+    grep -q "processor1" "$c/log" && grep -q "0.005" "$c/log" && ! grep -q "processor0/0.01\|IOstream" "$c/log" \
+        || { cat "$c/log"; fail "parallelHalfWritten: the message does not name processor1 and 0.005 alone"; }
+    passed=$((passed + 1)); echo "ok parallelHalfWritten: $(grep -m1 'is incomplete' "$c/log" | cut -c1-150)"
+fi
+
+# 19. No coagulation (kernel none): inception and transport alone, no event
+if want noKernel; then
+    c=$(copyCase noKernel)
+    setEntry "$c" constant/coagulationProperties kernel "{ type none; }"
+    expectRun "$c"
+    grep -q "coagulation events *= 0 (fictitious 0)" "$c/log" || fail "noKernel: coagulation events"
+    grep -q "particles in/incepted/out  = 0 / [1-9]" "$c/log" || fail "noKernel: no inception"
+fi
+
+# 20. Dictionary variables: an entry that the file references with $ is a variable, not a typo
+if want variables; then
+    c=$(copyCase variables)
+    sed -i 's/^seed .*/mySeed 1;\nseed $mySeed;/' "$c/constant/coagulationProperties"
+    expectRun "$c"
+fi
+
+# 21. The tools' bad options: a case that does not exist, a negative count
+if want tools; then
+    rc=0; $report --case "$workDir/no/such/case" > "$workDir/log.noCase" 2>&1 || rc=$?
+    [ "$rc" -eq 2 ] && grep -q "no such case" "$workDir/log.noCase" \
+        || { cat "$workDir/log.noCase"; fail "tools: coagulationReport on a missing case: exit $rc"; }
+    rc=0; coagulationEnsemble -case "$base" -realisations -2 > "$workDir/log.ensemble" 2>&1 || rc=$?
+    [ "$rc" -eq 2 ] && grep -q -- "-2" "$workDir/log.ensemble" && ! grep -q "needs a value" "$workDir/log.ensemble" \
+        || { cat "$workDir/log.ensemble"; fail "tools: coagulationEnsemble -realisations -2: exit $rc"; }
+    passed=$((passed + 1)); echo "ok tools: a missing case, a negative count"
+fi
+
 echo "PASS faults: $passed cases ran with closed balances or stopped with a named fatal error"

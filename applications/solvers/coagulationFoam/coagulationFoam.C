@@ -34,6 +34,9 @@ Description
 #include "coagulationCloud.H"
 #include "caseChecks.H"
 
+#include <csignal>
+#include <new>
+
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 int main(int argc, char *argv[])
@@ -49,37 +52,55 @@ int main(int argc, char *argv[])
     #include "createMesh.H"
     #include "createFields.H"
 
+    // A write past a file size limit (ulimit -f) then fails with EFBIG and
+    // stops the run with a message, as on a full disk, instead of SIGXFSZ;
+    // memory exhausted throws std::bad_alloc (OpenFOAM's handler would
+    // abort without naming the cause), answered below
+    std::signal(SIGXFSZ, SIG_IGN);
+    std::set_new_handler(nullptr);
+
     Info<< "\nStarting time loop\n" << endl;
 
-    while (runTime.run())
+    try
     {
-        // The last write is complete once run() has had the function
-        // objects write too: mark it so for restarts
-        cloud.completeWrite();
-
-        ++runTime;
-
-        Info<< "Time = " << runTime.timeName()
-            << "  particles = " << returnReduce(cloud.size(), sumOp<label>())
-            << nl;
-
-        // The split step over deltaT (Patterson & Wagner 2011, section 2):
-        // Strang A(dt/2) S(dt) A(dt/2) or Lie S(dt) A(dt), S inception +
-        // coagulation in every cell, A transport; then the cloud functions
-        // on the new state (M0..M3, samples)
-        cloud.evolve();
-
-        if (runTime.write())
+        while (runTime.run())
         {
-            // The cloud functions' output (the balances checked), then the
-            // split step's wall times
-            cloud.onWrite();
-            cloud.reportTimes();
-        }
-    }
+            // The last write is complete once run() has had the function
+            // objects write too: mark it so for restarts
+            cloud.completeWrite();
 
-    // Samples to disk, the last write marked complete, balances checked
-    cloud.endRun();
+            ++runTime;
+
+            Info<< "Time = " << runTime.timeName() << "  particles = "
+                << returnReduce(cloud.size(), sumOp<label>()) << nl;
+
+            // The split step over deltaT (Patterson & Wagner 2011,
+            // section 2): Strang A(dt/2) S(dt) A(dt/2) or Lie S(dt) A(dt),
+            // S inception + coagulation in every cell, A transport; then
+            // the cloud functions on the new state (M0..M3, samples)
+            cloud.evolve();
+
+            if (runTime.write())
+            {
+                // The cloud functions' output (the balances checked), then
+                // the split step's wall times
+                cloud.onWrite();
+                cloud.reportTimes();
+            }
+        }
+
+        // Samples to disk, the last write marked complete, balances checked
+        cloud.endRun();
+    }
+    catch (const std::bad_alloc&)
+    {
+        FatalErrorInFunction
+            << "Out of memory at time " << runTime.timeName() << " with "
+            << cloud.size() << " particles on this processor." << nl
+            << "    Lower statisticalWeight/n or set numberControl/"
+            << "maxParticlesPerCell in " << cloud.properties().objectPath()
+            << nl << exit(FatalError);
+    }
 
     Info<< "End\n" << endl;
 

@@ -9,6 +9,7 @@
 #include "IOstreams.H"
 #include "IOField.H"
 #include "Cloud.H"
+#include "restartPrecision.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -87,6 +88,9 @@ void Foam::coagulation::coagulationParticle::writeFields
     const Cloud<coagulationParticle>& c
 )
 {
+    // All digits: a restart goes on from exactly the state written
+    const restartPrecision allDigits;
+
     particle::writeFields(c);
 
     const label np = c.size();

@@ -67,6 +67,8 @@ def same(a, b):
 
 
 def find_sample_files(case):
+    if not os.path.isdir(case):
+        raise InputError("no such case: %s is not a folder" % case)
     d = os.path.join(case, SAMPLE_DIR)
     files = sorted(set(glob.glob(os.path.join(d, "*.h5"))
                        + glob.glob(os.path.join(d, "**", "*.h5"), recursive=True)))
@@ -226,6 +228,14 @@ class RunReader:
             inwin_per_file.append(w)
             tkeys_per_file.append(np.round(fd["times"][w] / tq).astype(np.int64))
         all_keys = np.unique(np.concatenate(tkeys_per_file))
+        if all_keys.size == 0:
+            t_all = np.concatenate([fd["times"] for fd in files])
+            raise InputError(
+                "no sample of %s lies in the averaging window: the samples run from t = %g to "
+                "%g, the window starts at tRelax = %g%s. The run ended before tRelax: run it "
+                "longer, or set an earlier start (--t-relax)"
+                % (case, t_all.min(), t_all.max(), t_relax,
+                   "" if t_end is None else " and ends at %g" % t_end))
         data = np.full((all_keys.size, run_cells.size, self.nmom), np.nan)
         # restarts: files with a later first time overwrite earlier ones
         order = sorted(range(len(files)), key=lambda i: (float(files[i]["times"][0]), files[i]["path"]))

@@ -72,6 +72,23 @@ Foam::coagulation::cloudFunctions::momentSampler::momentSampler
         }
     }
 
+    // A run that ends before tRelax takes no sample into a time average:
+    // said now, not found out by the tools afterwards
+    if
+    (
+        runTime.endTime().value() < 0.5*GREAT
+     && !(tRelax_ < runTime.endTime().value())
+    )
+    {
+        WarningInFunction
+            << "The run ends at endTime " << runTime.endTime().value()
+            << ", not after tRelax = " << tRelax_ << " (" << dict.name()
+            << "): the samples are written, but no time average will be"
+            << " taken from them (coagulationReport.py needs samples at"
+            << " t >= tRelax). Set a later endTime or an earlier tRelax"
+            << nl << endl;
+    }
+
     const fileName dir
     (
         runTime.globalPath()/"postProcessing"/"coagulationSamples"
@@ -179,12 +196,17 @@ void Foam::coagulation::cloudFunctions::momentSampler::flush()
     }
     catch (const std::exception& e)
     {
+        OStringStream upTo;
+        if (lastFlushed_ > -GREAT)
+        {
+            upTo << " (time " << Time::timeName(lastFlushed_) << ")";
+        }
         FatalErrorInFunction
-            << "Cannot write the samples to " << file_ << " (disk full?): "
-            << e.what() << nl << "    The file is intact and holds the"
-            << " samples up to the last write"
-            << (lastFlushed_ > -GREAT ? " (time " + Foam::name(lastFlushed_) + ")" : word(""))
-            << "; restart from the latest complete time" << nl
+            << "Cannot write the samples to " << file_.c_str()
+            << " (disk full?): " << e.what() << nl
+            << "    The file is intact and holds the samples up to the last"
+            << " write" << upTo.str().c_str() << "; restart from the latest"
+            << " complete time" << nl
             << exit(FatalError);
     }
 }

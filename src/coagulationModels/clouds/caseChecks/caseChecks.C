@@ -12,6 +12,51 @@
 #include "emptyPolyPatch.H"
 #include "surfaceFields.H"
 
+#include <cctype>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Whether the file dict was read from refers to key as a variable, $key or
+//  ${key}: an entry the file uses so is there to be expanded, not a setting
+bool isVariable(const Foam::dictionary& dict, const Foam::word& key)
+{
+    std::ifstream is(dict.topDict().name());
+    const std::string text
+    (
+        (std::istreambuf_iterator<char>(is)), std::istreambuf_iterator<char>()
+    );
+    for (const std::string& ref : {"$" + key, "${" + key})
+    {
+        for
+        (
+            std::size_t pos = text.find(ref);
+            pos != std::string::npos;
+            pos = text.find(ref, pos + 1)
+        )
+        {
+            const std::size_t end = pos + ref.size();
+            if
+            (
+                end == text.size()
+             || !(std::isalnum(static_cast<unsigned char>(text[end])) || text[end] == '_')
+            )
+            {
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * * * * Functions * * * * * * * * * * * * * * * //
 
 void Foam::coagulation::caseChecks::keywords
@@ -22,12 +67,13 @@ void Foam::coagulation::caseChecks::keywords
 {
     for (const entry& e : dict)
     {
-        if (!valid.found(e.keyword()))
+        if (!valid.found(e.keyword()) && !isVariable(dict, e.keyword()))
         {
             FatalIOErrorInFunction(dict)
                 << "Unknown entry '" << e.keyword() << "' in "
                 << dict.name() << nl
-                << "    Valid entries are " << valid << nl
+                << "    Valid entries are " << valid << " (and variables:"
+                << " an entry the file uses as $name)" << nl
                 << exit(FatalIOError);
         }
     }
@@ -176,6 +222,31 @@ void Foam::coagulation::caseChecks::noDuplicates(const IOdictionary& dict)
     dictionary scan;
     scan.read(is, false);
     entry::globalInputMode = saved;
+}
+
+
+void Foam::coagulation::caseChecks::cellVolumes(const fvMesh& mesh)
+{
+    // Far below the mean: a collapsed or inverted cell (its computed volume
+    // is round-off, or negative), whose events per unit volume would be
+    // without bound and in which no particle could be tracked
+    const scalarField& V = mesh.V().field();
+    const scalar mean =
+        gSum(V)/max(returnReduce(V.size(), sumOp<label>()), label(1));
+    forAll(V, celli)
+    {
+        if (!(V[celli] > 1e-12*mean))
+        {
+            FatalErrorInFunction
+                << "Cell " << celli << " (centre " << mesh.C()[celli]
+                << ") of the mesh in "
+                << mesh.time().path()/mesh.pointsInstance()/polyMesh::meshSubDir
+                << " has volume " << V[celli] << ", the mean is " << mean
+                << ": a zero-volume or inverted cell." << nl
+                << "    Run checkMesh on the case and repair the mesh" << nl
+                << exit(FatalError);
+        }
+    }
 }
 
 

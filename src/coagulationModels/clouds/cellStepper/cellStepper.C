@@ -10,6 +10,7 @@
 #include "caseChecks.H"
 
 #include <chrono>
+#include <new>
 #include <string>
 
 #ifdef _OPENMP
@@ -141,6 +142,7 @@ void Foam::coagulation::cellStepper::advance
     // threads (the largest cells, downstream on a duct, are not known in
     // advance, so cells are handed out one at a time)
     std::string failure;
+    bool outOfMemory = false;
     #pragma omp parallel for schedule(dynamic, 1) num_threads(cloud_.nThreads())
     for (label celli = 0; celli < nCells; ++celli)
     {
@@ -164,6 +166,11 @@ void Foam::coagulation::cellStepper::advance
                 advanceCell(celli, dt, w, outcomes_[celli]);
             }
         }
+        catch (const std::bad_alloc&)
+        {
+            #pragma omp atomic write
+            outOfMemory = true;
+        }
         catch (const std::exception& e)
         {
             #pragma omp critical(cellStepFailure)
@@ -173,6 +180,11 @@ void Foam::coagulation::cellStepper::advance
                     "cell " + std::to_string(celli) + ": " + e.what();
             }
         }
+    }
+    if (outOfMemory)
+    {
+        // Out of the threads: the solver names the particle count
+        throw std::bad_alloc();
     }
     if (!failure.empty())
     {

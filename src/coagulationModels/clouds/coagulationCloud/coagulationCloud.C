@@ -7,6 +7,7 @@
 
 #include "coagulationCloud.H"
 #include "caseChecks.H"
+#include "restartPrecision.H"
 
 #include <cstdlib>
 
@@ -96,8 +97,10 @@ Foam::coagulation::coagulationCloud::coagulationCloud
     massBalance_(),
     functions_(),
     memoryLimit_(0),
+    memoryLimitedBy_(),
     timer_(),
-    pendingWrite_()
+    pendingWrite_(),
+    inputFields_()
 {
     // Every entry is checked: an entry given twice is refused (OpenFOAM
     // would keep the last one), an unknown keyword is a typo, not a default
@@ -112,6 +115,7 @@ Foam::coagulation::coagulationCloud::coagulationCloud
             "initialPopulation", "cloudFunctions"
         }
     );
+    caseChecks::cellVolumes(mesh_);
 
     const word scheme =
         properties_.getOrDefault<word>
@@ -198,6 +202,7 @@ Foam::coagulation::coagulationCloud::coagulationCloud
     // Particles of the start time, if any: of a completely written time of
     // this mesh, each in a cell with a finite positive mass and weight
     checkStartTime();
+    checkParticleFiles();
     coagulationParticle::readFields(*this);
     checkParticles();
     createInitialPopulation();
@@ -205,7 +210,7 @@ Foam::coagulation::coagulationCloud::coagulationCloud
     // The cloud may grow into the memory free now, less a quarter for the
     // rest of the run (fields, samples, the cell step's work arrays)
     memoryLimit_ =
-        0.75*availableMemory()
+        0.75*availableMemory(memoryLimitedBy_)
       + returnReduce(this->size(), sumOp<label>())*bytesPerParticle();
 
     // Checked before anything is written
@@ -236,6 +241,11 @@ Foam::coagulation::coagulationCloud::coagulationCloud
         }
     }
 
+    // The fields read (U, the submodels'): the cloud writes them, with all
+    // their digits, so that a restart reads the flow and the sources exactly
+    takeInputFields<volScalarField>();
+    takeInputFields<volVectorField>();
+
     Info<< "Coagulation cloud " << cloudName << ": "
         << returnReduce(this->size(), sumOp<label>())
         << " particles, weight per new particle "
@@ -247,6 +257,17 @@ Foam::coagulation::coagulationCloud::coagulationCloud
         << (std::getenv("OMP_WAIT_POLICY") ? std::getenv("OMP_WAIT_POLICY") : "unset")
         << ")" << nl << endl;
 
+    #ifdef _OPENMP
+    if (nThreads_ > omp_get_num_procs())
+    {
+        WarningInFunction
+            << "OMP_NUM_THREADS = " << nThreads_ << " asks for more threads than"
+            << " the " << omp_get_num_procs() << " cores this process may"
+            << " use: the threads take turns, and the cell step is several"
+            << " times slower. Set OMP_NUM_THREADS to at most "
+            << omp_get_num_procs() << nl << endl;
+    }
+    #endif
     if (nThreads_ > 1 && !std::getenv("OMP_WAIT_POLICY"))
     {
         WarningInFunction
@@ -284,6 +305,25 @@ void Foam::coagulation::coagulationCloud::createInitialPopulation()
 
     const label created = returnReduce(initial.create(*this), sumOp<label>());
     Info<< "Initial population: " << created << " particles" << endl;
+}
+
+
+template<class FieldType>
+void Foam::coagulation::coagulationCloud::takeInputFields()
+{
+    for (const word& name : mesh_.sortedNames<FieldType>())
+    {
+        FieldType& f = mesh_.lookupObjectRef<FieldType>(name);
+        if
+        (
+            f.readOpt() == IOobject::MUST_READ
+         && f.writeOpt() == IOobject::AUTO_WRITE
+        )
+        {
+            f.writeOpt() = IOobject::NO_WRITE;
+            inputFields_.append(&f);
+        }
+    }
 }
 
 
@@ -374,6 +414,14 @@ void Foam::coagulation::coagulationCloud::evolve()
 
 void Foam::coagulation::coagulationCloud::onWrite()
 {
+    {
+        const restartPrecision allDigits;
+        for (regIOobject* f : inputFields_)
+        {
+            f->write();
+        }
+    }
+
     forAllFunctions([](cloudFunction& f) { f.write(); });
     pendingWrite_ = mesh_.time().timeName();
 }

@@ -12,6 +12,7 @@ Description
 
 #include "coagulationCloud.H"
 #include "caseChecks.H"
+#include "restartPrecision.H"
 #include "fvMesh.H"
 #include "surfaceFields.H"
 #include "OSspecific.H"
@@ -19,6 +20,9 @@ Description
 
 #include <fstream>
 #include <string>
+
+#include <sys/resource.h>
+#include <unistd.h>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -50,20 +54,48 @@ Foam::dictionary meshSignature(const Foam::fvMesh& mesh)
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::scalar Foam::coagulation::coagulationCloud::availableMemory()
+Foam::scalar Foam::coagulation::coagulationCloud::availableMemory
+(
+    std::string& limitedBy
+)
 {
-    std::ifstream meminfo("/proc/meminfo");
-    std::string key;
-    double kB = 0;
-    std::string unit;
-    while (meminfo >> key >> kB >> unit)
+    // The machine's memory not in use now
+    scalar bytes = 1e18;
+    limitedBy = "the memory available on this machine";
     {
-        if (key == "MemAvailable:")
+        std::ifstream meminfo("/proc/meminfo");
+        std::string key;
+        double kB = 0;
+        std::string unit;
+        while (meminfo >> key >> kB >> unit)
         {
-            return 1024*kB;
+            if (key == "MemAvailable:")
+            {
+                bytes = 1024*kB;
+                break;
+            }
         }
     }
-    return 1e18;
+
+    // ... or what the process may still map under its limit (ulimit -v),
+    // whichever is less
+    struct rlimit limit;
+    if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
+    {
+        double pages = 0;
+        std::ifstream statm("/proc/self/statm");
+        statm >> pages;
+        const scalar left =
+            max(scalar(limit.rlim_cur) - pages*sysconf(_SC_PAGESIZE), scalar(0));
+        if (left < bytes)
+        {
+            bytes = left;
+            limitedBy =
+                "the process's address space limit (ulimit -v "
+              + std::to_string(limit.rlim_cur/1024) + ")";
+        }
+    }
+    return bytes;
 }
 
 
@@ -84,8 +116,8 @@ void Foam::coagulation::coagulationCloud::checkMemory() const
         FatalErrorInFunction
             << "The cloud holds " << this->size() << " particles (about "
             << bytes/(1 << 30) << " GiB), more than the "
-            << memoryLimit_/(1 << 30) << " GiB it may take on this machine"
-            << " (three quarters of the memory available at the start)."
+            << memoryLimit_/(1 << 30) << " GiB it may take (three quarters"
+            << " of " << memoryLimitedBy_.c_str() << " at the start)."
             << nl << "    Lower statisticalWeight/n or set numberControl/"
             << "maxParticlesPerCell in " << properties_.objectPath() << nl
             << exit(FatalError);
@@ -169,7 +201,8 @@ void Foam::coagulation::coagulationCloud::checkExpectedSize
             << " particles (inception over " << residence << " s, the"
             << " residence time or the run), about " << bytes/(1 << 30)
             << " GiB: more than the " << memoryLimit_/(1 << 30)
-            << " GiB this machine can give the cloud." << nl
+            << " GiB the cloud may take (three quarters of "
+            << memoryLimitedBy_.c_str() << ")." << nl
             << "    Lower n, or set numberControl { maxParticlesPerCell N; }"
             << nl << exit(FatalIOError);
     }
@@ -181,38 +214,52 @@ void Foam::coagulation::coagulationCloud::checkStartTime() const
     const Time& runTime = mesh_.time();
 
     // A time that OpenFOAM wrote (it has uniform/time) is complete once the
-    // run has marked it so, after every field and function object wrote
+    // run has marked it so, after every field and function object wrote;
+    // in a decomposed case on every processor
     const fileName uniform(runTime.timePath()/"uniform");
-    bool incomplete =
+    labelList incomplete(Pstream::nProcs(), 0);
+    incomplete[Pstream::myProcNo()] =
         isFile(uniform/"time") && !isFile(uniform/completeMarker);
-    reduce(incomplete, orOp<bool>());
+    Pstream::gatherList(incomplete);
+    Pstream::scatterList(incomplete);
 
-    if (incomplete)
+    if (findIndex(incomplete, 1) != -1)
     {
-        // The latest earlier time that is complete, or not written by a run
-        word previous("none");
-        const instantList times = runTime.times();
-        forAllReverse(times, i)
+        const word previous(latestCompleteTime());
+
+        // One message, the master's, naming the processors
+        if (!Pstream::master())
         {
-            if (times[i].value() < runTime.value() - 0.5*runTime.deltaTValue())
+            // The master's error ends this process too
+            returnReduce(label(0), sumOp<label>());
+        }
+        OStringStream where;
+        if (Pstream::parRun())
+        {
+            where << " on";
+            forAll(incomplete, proci)
             {
-                const fileName dir(runTime.path()/times[i].name()/"uniform");
-                if (!isFile(dir/"time") || isFile(dir/completeMarker))
+                if (incomplete[proci])
                 {
-                    previous = times[i].name();
-                    break;
+                    where << " processor" << proci;
                 }
             }
         }
-
+        const fileName timeDir
+        (
+            Pstream::parRun()
+          ? runTime.globalPath()/"processor*"/runTime.timeName()
+          : runTime.timePath()
+        );
         FatalErrorInFunction
-            << "Time " << runTime.timeName() << " of case " << runTime.path()
-            << " is incomplete: it has no uniform/" << completeMarker
-            << ", so the run that wrote it stopped while writing." << nl
+            << "Time " << runTime.timeName() << " of case "
+            << runTime.globalPath() << " is incomplete" << where.str().c_str()
+            << ": it has no uniform/" << completeMarker << ", so the run that"
+            << " wrote it stopped while writing." << nl
             << "    Restart from the latest complete time, " << previous
-            << ": remove (or rename) " << runTime.timePath()
-            << ", or set 'startFrom startTime; startTime " << previous
-            << ";' in " << runTime.controlDict().name() << nl
+            << ": remove (or rename) " << timeDir << ", or set 'startFrom"
+            << " startTime; startTime " << previous << ";' in "
+            << runTime.globalPath()/"system"/"controlDict" << nl
             << exit(FatalError);
     }
 
@@ -246,6 +293,119 @@ void Foam::coagulation::coagulationCloud::checkStartTime() const
                 << nl << exit(FatalIOError);
         }
     }
+}
+
+
+Foam::word Foam::coagulation::coagulationCloud::latestCompleteTime() const
+{
+    // The latest time before the start time that the run that wrote it
+    // marked complete (or that no run wrote, as 0), on every processor
+    const Time& runTime = mesh_.time();
+    scalar latest = -GREAT;
+    const instantList times = runTime.times();
+    forAllReverse(times, i)
+    {
+        if (times[i].value() < runTime.value() - 0.5*runTime.deltaTValue())
+        {
+            const fileName dir(runTime.path()/times[i].name()/"uniform");
+            if (!isFile(dir/"time") || isFile(dir/completeMarker))
+            {
+                latest = times[i].value();
+                break;
+            }
+        }
+    }
+    reduce(latest, minOp<scalar>());
+    return latest > -GREAT ? Time::timeName(latest) : word("none");
+}
+
+
+void Foam::coagulation::coagulationCloud::checkParticleFiles() const
+{
+    // The completion marker holds the particle count of its time: every
+    // particle file must have that many, or it is of another time (a copy,
+    // a write cut short), and reading it would mix particles
+    const Time& runTime = mesh_.time();
+    const fileName marker(runTime.timePath()/"uniform"/completeMarker);
+    label expected = -1;
+    if (isFile(marker))
+    {
+        IFstream is(marker);
+        dictionary(is).readIfPresent("particles", expected);
+    }
+    if (expected < 0)
+    {
+        return;
+    }
+
+    const fileName dir(runTime.timePath()/cloud::prefix/this->name());
+    fileName file;
+    label found = -1;
+    if (this->size() != expected)
+    {
+        // The cloud's constructor read the particles' places
+        file = dir/(isFile(dir/"coordinates") ? "coordinates" : "positions");
+        found = this->size();
+    }
+    else if (expected > 0)
+    {
+        for (const word field : {"mass", "weight"})
+        {
+            if (!isFile(dir/field))
+            {
+                file = dir/field;
+                break;
+            }
+            IFstream is(dir/field);
+            IOobject io
+            (
+                field, runTime.timeName(), mesh_,
+                IOobject::NO_READ, IOobject::NO_WRITE, false
+            );
+            if (!io.readHeader(is) || readLabel(is) != expected)
+            {
+                file = dir/field;
+                IFstream again(dir/field);
+                io.readHeader(again);
+                found = readLabel(again);
+                break;
+            }
+        }
+    }
+
+    // The time to restart from, agreed by every processor
+    bool bad = !file.empty();
+    reduce(bad, orOp<bool>());
+    if (!bad)
+    {
+        return;
+    }
+    const word previous(latestCompleteTime());
+    if (file.empty())
+    {
+        // Another processor's error ends this process too
+        returnReduce(label(0), sumOp<label>());
+    }
+
+    OStringStream what;
+    if (found < 0)
+    {
+        what << " is missing";
+    }
+    else
+    {
+        what << " holds " << found << " particles";
+    }
+    FatalErrorInFunction
+        << "The particle file " << file << what.str().c_str() << ", but time "
+        << runTime.timeName() << " has " << expected << " (its uniform/"
+        << completeMarker << "): the file is of another time, or was cut"
+        << " short." << nl
+        << "    Put back the file written with time " << runTime.timeName()
+        << ", or restart from the latest complete time, " << previous
+        << " ('startFrom startTime; startTime " << previous << ";' in "
+        << runTime.globalPath()/"system"/"controlDict" << ")" << nl
+        << exit(FatalError);
 }
 
 
@@ -288,6 +448,48 @@ void Foam::coagulation::coagulationCloud::checkParticles() const
                 << exit(FatalError);
         }
         ++i;
+    }
+
+    // DSA carries particles of the one weight W: those of a run with
+    // weighted particles (SWA) or another weight cannot go on under it
+    if (algorithm_->equalWeights())
+    {
+        const scalar W = scaling_.particleWeight();
+        scalar wMin = GREAT;
+        scalar wMax = -GREAT;
+        for (const coagulationParticle& p : *this)
+        {
+            wMin = min(wMin, p.weight());
+            wMax = max(wMax, p.weight());
+        }
+        reduce(wMin, minOp<scalar>());
+        reduce(wMax, maxOp<scalar>());
+        if (wMax > -GREAT && (wMin != W || wMax != W))
+        {
+            const fileName marker
+            (
+                mesh_.time().timePath()/"uniform"/completeMarker
+            );
+            word writtenBy("unknown");
+            if (isFile(marker))
+            {
+                IFstream is(marker);
+                dictionary(is).readIfPresent("algorithm", writtenBy);
+            }
+            FatalIOErrorInFunction(properties_)
+                << "Entry 'algorithm' = " << algorithmName_ << " in "
+                << properties_.objectPath() << " keeps every particle of"
+                << " the one weight " << W << ", but the particles of the"
+                << " start time " << mesh_.time().timeName() << " ("
+                << dir/"weight" << ") have weights from " << wMin << " to "
+                << wMax << ": this restart continues a run of algorithm "
+                << writtenBy << "." << nl
+                << "    Keep 'algorithm " << writtenBy << ";' to go on from"
+                << " this time, or start afresh (remove the times after 0,"
+                << " or set 'startFrom startTime; startTime 0;' in "
+                << mesh_.time().globalPath()/"system"/"controlDict" << ")"
+                << nl << exit(FatalIOError);
+        }
     }
 }
 
@@ -337,6 +539,9 @@ void Foam::coagulation::coagulationCloud::completeWrite()
         meshSignature(mesh_)
     );
     marker.add("particles", this->size());
+    marker.add("algorithm", algorithmName_);
+    // All digits: the volume is compared at a restart
+    const restartPrecision allDigits;
     marker.regIOobject::writeObject
     (
         IOstream::ASCII,
