@@ -294,31 +294,33 @@ if want algorithmChange; then
     expectError "$c" "algorithm" "SWA" "DSA1" "restart"
 fi
 
-# 14. A cell of zero volume: refused at the start, pointing at checkMesh
+# 14. A cell of zero volume, or an inverted one: refused at the start, pointing at checkMesh
 if want zeroVolume; then
-    c=$(copyCase zeroVolume)
-    # the points at the x of cell 10's left face moved onto its right face (in ascii)
-    setEntry "$c" system/controlDict writeFormat ascii
-    (cd "$c" && foamFormatConvert -constant -time none > log.foamFormatConvert 2>&1)
-    "$COAGULATIONFOAM_PYTHON" - "$c/constant/polyMesh/points" <<'EOF'
+    # the points at the x of cell 10's left face moved onto its right face (zero volume),
+    # or past it onto cell 11's right face (cell 10 inverted), in ascii
+    for shift in 1 2; do
+        c=$(copyCase zeroVolume$shift)
+        setEntry "$c" system/controlDict writeFormat ascii
+        (cd "$c" && foamFormatConvert -constant -time none > log.foamFormatConvert 2>&1)
+        "$COAGULATIONFOAM_PYTHON" - "$c/constant/polyMesh/points" "$shift" <<'EOF'
 import re, sys
-p = sys.argv[1]
+p, shift = sys.argv[1], int(sys.argv[2])
 s = open(p).read()
 i = s.index("(", s.index("}"))
 pts = re.findall(r"\(([^()]*)\)", s[i + 1:])
 xs = sorted({float(q.split()[0]) for q in pts})
-x0, x1 = xs[10], xs[11]
 out = []
 for q in pts:
     v = q.split()
-    if float(v[0]) == x0:
-        v[0] = repr(x1)
+    if float(v[0]) == xs[10]:
+        v[0] = repr(xs[10 + shift])
     out.append("(" + " ".join(v) + ")")
 head = s[:i].rstrip()
 head = head[:head.rindex("\n")]          # drop the old count
 open(p, "w").write("%s\n%d\n(\n%s\n)\n" % (head, len(pts), "\n".join(out)))
 EOF
-    expectError "$c" "checkMesh" "volume"
+        expectError "$c" "checkMesh" "Cell 10 "
+    done
 fi
 
 # 15. A process memory limit (ulimit -v) below what the particles need: refused at the start,
