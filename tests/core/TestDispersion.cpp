@@ -90,7 +90,7 @@ TEST(BrownianDiffusivity, ContinuumAndFreeMolecularLimits)
     BrownianGas gas;
     gas.massUnit = 2.5e-21;  // masses in units of a monomer
     const double pi = 3.14159265358979323846;
-    const double kT = boltzmann * gas.temperature;
+    const double kT = constants::boltzmann * gas.temperature;
     // d >> lambda: Stokes-Einstein, D d = kT/(3 pi mu)
     {
         const double d = 1e-3;
@@ -102,7 +102,7 @@ TEST(BrownianDiffusivity, ContinuumAndFreeMolecularLimits)
     {
         const double d = 1e-11;
         const double mass = gas.density * pi * d * d * d / 6.0 / gas.massUnit;
-        const double limit = 2 * kT * gas.meanFreePath * (gas.A1 + gas.A2) / (3 * pi * gas.viscosity);
+        const double limit = 2 * kT * gas.meanFreePath * (gas.slip.A1 + gas.slip.A2) / (3 * pi * gas.viscosity);
         EXPECT_NEAR(brownianDiffusivity(mass, gas) * d * d, limit, 1e-3 * limit);
     }
     EXPECT_THROW(brownianDiffusivity(0.0, gas), std::invalid_argument);

@@ -16,6 +16,8 @@
 #include "coagulation/population/Inception.hpp"
 #include "coagulation/population/LargeArray.hpp"
 #include "coagulation/kernels/CoagulationKernel.hpp"
+#include "coagulation/kernels/BrownianKernel.hpp"
+#include "coagulation/aerosol/AerosolProperties.hpp"
 #include "coagulation/sampling/QuantizedSumTree.hpp"
 #include "coagulation/sampling/MajorantSampler.hpp"
 #include "coagulation/algorithms/CellAlgorithm.hpp"

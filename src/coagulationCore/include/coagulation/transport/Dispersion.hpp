@@ -4,22 +4,20 @@
 #define COAGULATION_DISPERSION_HPP
 
 
+#include "coagulation/aerosol/AerosolProperties.hpp"
+
 namespace coag {
 
-//- The gas and material that set a particle's Brownian diffusivity.
+//- The gas and material that set a particle's Brownian diffusivity (the mean free path
+//  given, not derived from a pressure).
 struct BrownianGas {
     double temperature = 293.15;   //- T [K]
     double viscosity = 1.81e-5;    //- dynamic viscosity mu [Pa s]
     double meanFreePath = 6.65e-8; //- lambda [m]
     double density = 1000;         //- material density of the (spherical) particles [kg/m^3]
     double massUnit = 1;           //- kg per unit of particle mass (1: masses in kg)
-    //- Cunningham slip correction Cc = 1 + Kn (A1 + A2 exp(-A3/Kn)), Kn = 2 lambda/d
-    //  (Davies 1945 constants, as in Hinds, Aerosol Technology, eq. 3.20)
-    double A1 = 1.257, A2 = 0.400, A3 = 1.10;
+    SlipCorrection slip;           //- Cunningham's C(Kn), Kn = 2 lambda / d
 };
-
-//- Boltzmann's constant [J/K].
-constexpr double boltzmann = 1.380649e-23;
 
 //- Diameter [m] of a sphere of the given mass (in BrownianGas::massUnit units).
 double sphereDiameter(double mass, const BrownianGas& gas);

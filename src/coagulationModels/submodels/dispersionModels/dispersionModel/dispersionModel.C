@@ -188,9 +188,9 @@ coag::BrownianGas Foam::coagulation::dispersionModel::readBrownianGas
     {
         gas.massUnit = caseChecks::positive(dict, "massUnit");
     }
-    if (dict.found("A1")) gas.A1 = caseChecks::nonNegative(dict, "A1");
-    if (dict.found("A2")) gas.A2 = caseChecks::nonNegative(dict, "A2");
-    if (dict.found("A3")) gas.A3 = caseChecks::positive(dict, "A3");
+    if (dict.found("A1")) gas.slip.A1 = caseChecks::nonNegative(dict, "A1");
+    if (dict.found("A2")) gas.slip.A2 = caseChecks::nonNegative(dict, "A2");
+    if (dict.found("A3")) gas.slip.A3 = caseChecks::positive(dict, "A3");
     return gas;
 }
 

@@ -1,0 +1,87 @@
+// coagulationFoam core. Copyright (C) 2025-2026 the coagulationFoam authors
+// SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
+#ifndef COAGULATION_BROWNIANKERNEL_HPP
+#define COAGULATION_BROWNIANKERNEL_HPP
+
+#include "coagulation/aerosol/AerosolProperties.hpp"
+#include "coagulation/kernels/CoagulationKernel.hpp"
+
+#include <string>
+#include <vector>
+
+namespace coag {
+
+//- The regimes of Brownian coagulation, by the particles' Knudsen number Kn = 2 lambda / d.
+enum class BrownianRegime { freeMolecular, continuum, transition };
+
+//- "freeMolecular", "continuum", "transition"; parseBrownianRegime throws
+//  std::invalid_argument for another name.
+std::string brownianRegimeName(BrownianRegime regime);
+BrownianRegime parseBrownianRegime(const std::string& name);
+
+//- Brownian coagulation of spheres of one material in a gas (masses in kg, K in m3/s).
+//  With d the diameter, c = sqrt(8kT/(pi m)) the mean thermal speed, C the Cunningham
+//  factor and D = kTC/(3 pi mu d) the diffusivity of each particle (i, j):
+//    freeMolecular  K = (pi/4) (di + dj)^2 sqrt(ci^2 + cj^2)        (kinetic theory)
+//    continuum      K = 2 pi (Di + Dj)(di + dj)                    (Smoluchowski, slip-corrected)
+//    transition     Fuchs' interpolation, K = 2 pi (Di + Dj)(di + dj) / F with
+//                   F = (di + dj)/(di + dj + 2 sqrt(gi^2 + gj^2))
+//                     + 8 (Di + Dj) / (sqrt(ci^2 + cj^2)(di + dj)),
+//                   gi = ((di + li)^3 - (di^2 + li^2)^(3/2)) / (3 di li) - di,
+//                   li = 8 Di / (pi ci)
+//  (Fuchs 1964; the form of Seinfeld & Pandis table 13.1 and Jacobson, Fundamentals of
+//  Atmospheric Modeling, 2nd ed., eq. 15.33). The transition kernel tends to the
+//  free-molecular one as Kn -> infinity and to the slip-corrected continuum one as Kn -> 0.
+//
+//  Product-sum majorants in the mass m (d = a m^(1/3), a = (6/(pi rho))^(1/3)):
+//    freeMolecular  sqrt(1/mi + 1/mj) <= mi^(-1/2) + mj^(-1/2), so
+//                   Khat = cfm (xi + xj)^2 (mi^(-1/2) + mj^(-1/2)), x = m^(1/3), six terms;
+//                   Khat / K <= sqrt(2), equal at very unequal masses.
+//    continuum      C <= 1 + Abar/d with Abar = 2 lambda (A1 + A2) (SlipCorrection), so
+//                   Khat = (2kT/3mu)(1/di + Abar/di^2 + 1/dj + Abar/dj^2)(di + dj), seven
+//                   terms; Khat / K <= (A1 + A2)/A1 = 1.32.
+//    transition     K <= the free-molecular K (F exceeds its second term), so the
+//                   free-molecular majorant: exact in the free-molecular limit, loose
+//                   where continuum particles dominate the population.
+class BrownianKernel : public CoagulationKernel {
+public:
+    //- Throws std::invalid_argument for a gas or material that is not positive and finite.
+    BrownianKernel(BrownianRegime regime, const GasState& gas, const ParticleMaterial& material);
+
+    std::string name() const override { return "Brownian"; }
+    double operator()(const ParticleType& a, const ParticleType& b) const override;
+    int nBasis() const override { return 8; }
+    void basis(const ParticleType& z, double* phi) const override;
+    const std::vector<MajorantTerm>& majorantTerms() const override { return terms_; }
+    bool constantBasis(int b) const override { return b == 0; }
+
+    BrownianRegime regime() const { return regime_; }
+    const GasState& gas() const { return gas_; }
+    const ParticleMaterial& material() const { return material_; }
+
+    //- The three kernels at (a, b), whatever the regime of this one
+    double freeMolecular(const ParticleType& a, const ParticleType& b) const;
+    double continuum(const ParticleType& a, const ParticleType& b) const;
+    double transition(const ParticleType& a, const ParticleType& b) const;
+
+    //- The single-particle quantities: diameter [m], mean thermal speed [m/s], Cunningham
+    //  factor, diffusivity [m2/s]
+    struct Single {
+        double d, c, C, D;
+    };
+    Single single(double mass) const;
+
+private:
+    BrownianRegime regime_;
+    GasState gas_;
+    ParticleMaterial material_;
+    SlipCorrection slip_;
+    double kT_;
+    double lambda_;
+    double a_;       //!< d = a m^(1/3)
+    std::vector<MajorantTerm> terms_;
+};
+
+} // namespace coag
+
+#endif

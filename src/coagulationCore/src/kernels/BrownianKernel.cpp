@@ -1,0 +1,130 @@
+// coagulationFoam core. Copyright (C) 2025-2026 the coagulationFoam authors
+// SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
+#include "coagulation/kernels/BrownianKernel.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace coag {
+
+namespace {
+
+// The basis phi_b(m) of the majorants (BrownianKernel.hpp)
+enum Basis { one, third, twoThirds, sixth, minusSixth, minusHalf, minusThird, minusTwoThirds };
+
+} // namespace
+
+std::string brownianRegimeName(BrownianRegime regime)
+{
+    switch (regime) {
+    case BrownianRegime::freeMolecular: return "freeMolecular";
+    case BrownianRegime::continuum: return "continuum";
+    case BrownianRegime::transition: return "transition";
+    }
+    return "transition";
+}
+
+BrownianRegime parseBrownianRegime(const std::string& name)
+{
+    for (BrownianRegime r :
+         {BrownianRegime::freeMolecular, BrownianRegime::continuum, BrownianRegime::transition}) {
+        if (brownianRegimeName(r) == name) return r;
+    }
+    throw std::invalid_argument("coag::parseBrownianRegime: unknown regime '" + name
+                                + "'; valid regimes are freeMolecular continuum transition");
+}
+
+BrownianKernel::BrownianKernel(BrownianRegime regime, const GasState& gas,
+                               const ParticleMaterial& material)
+    : regime_(regime), gas_(gas), material_(material)
+{
+    gas_.check();
+    material_.check();
+    using namespace constants;
+    kT_ = boltzmann * gas_.T;
+    lambda_ = gas_.meanFreePath();
+    a_ = material_.diameter(1.0);
+
+    if (regime_ == BrownianRegime::continuum) {
+        // (2kT/3mu)(1/di + Abar/di^2 + 1/dj + Abar/dj^2)(di + dj), d = a x, x = m^(1/3)
+        const double c = 2.0 * kT_ / (3.0 * gas_.mu);
+        // C <= slip.bound(Kn) = 1 + (A1 + A2) 2 lambda / d
+        const double b = 2.0 * lambda_ * (slip_.A1 + slip_.A2) / a_;
+        terms_ = {{2.0 * c, one, one},
+                  {c, minusThird, third},         {c, third, minusThird},
+                  {c * b, minusThird, one},       {c * b, one, minusThird},
+                  {c * b, minusTwoThirds, third}, {c * b, third, minusTwoThirds}};
+    } else {
+        // cfm (xi + xj)^2 (mi^(-1/2) + mj^(-1/2)), cfm = (pi/4) a^2 sqrt(8kT/pi)
+        const double c = 0.25 * pi * a_ * a_ * std::sqrt(8.0 * kT_ / pi);
+        terms_ = {{c, sixth, one},           {c, one, sixth},
+                  {c, twoThirds, minusHalf}, {c, minusHalf, twoThirds},
+                  {2.0 * c, minusSixth, third}, {2.0 * c, third, minusSixth}};
+    }
+}
+
+BrownianKernel::Single BrownianKernel::single(double mass) const
+{
+    using namespace constants;
+    Single s;
+    s.d = a_ * std::cbrt(mass);
+    s.c = std::sqrt(8.0 * kT_ / (pi * mass));
+    s.C = slip_(2.0 * lambda_ / s.d);
+    s.D = stokesEinsteinDiffusivity(kT_, s.C, gas_.mu, s.d);
+    return s;
+}
+
+double BrownianKernel::freeMolecular(const ParticleType& a, const ParticleType& b) const
+{
+    const Single i = single(a.mass), j = single(b.mass);
+    const double d = i.d + j.d;
+    return 0.25 * constants::pi * d * d * std::sqrt(i.c * i.c + j.c * j.c);
+}
+
+double BrownianKernel::continuum(const ParticleType& a, const ParticleType& b) const
+{
+    const Single i = single(a.mass), j = single(b.mass);
+    return 2.0 * constants::pi * (i.D + j.D) * (i.d + j.d);
+}
+
+double BrownianKernel::transition(const ParticleType& a, const ParticleType& b) const
+{
+    using constants::pi;
+    const Single i = single(a.mass), j = single(b.mass);
+    auto g = [](const Single& s) {
+        const double l = 8.0 * s.D / (pi * s.c);
+        const double dl = s.d + l;
+        return (dl * dl * dl - std::pow(s.d * s.d + l * l, 1.5)) / (3.0 * s.d * l) - s.d;
+    };
+    const double gi = g(i), gj = g(j);
+    const double d = i.d + j.d, D = i.D + j.D;
+    const double F = d / (d + 2.0 * std::sqrt(gi * gi + gj * gj))
+                     + 8.0 * D / (std::sqrt(i.c * i.c + j.c * j.c) * d);
+    return 2.0 * pi * D * d / F;
+}
+
+double BrownianKernel::operator()(const ParticleType& a, const ParticleType& b) const
+{
+    switch (regime_) {
+    case BrownianRegime::freeMolecular: return freeMolecular(a, b);
+    case BrownianRegime::continuum: return continuum(a, b);
+    case BrownianRegime::transition: return transition(a, b);
+    }
+    return transition(a, b);
+}
+
+void BrownianKernel::basis(const ParticleType& z, double* phi) const
+{
+    const double x = std::cbrt(z.mass);
+    const double s = std::sqrt(x);
+    phi[one] = 1.0;
+    phi[third] = x;
+    phi[twoThirds] = x * x;
+    phi[sixth] = s;
+    phi[minusSixth] = 1.0 / s;
+    phi[minusHalf] = 1.0 / (s * x);
+    phi[minusThird] = 1.0 / x;
+    phi[minusTwoThirds] = 1.0 / (x * x);
+}
+
+} // namespace coag
