@@ -45,21 +45,34 @@ BrownianKernel::BrownianKernel(BrownianRegime regime, const GasState& gas,
     lambda_ = gas_.meanFreePath();
     a_ = material_.diameter(1.0);
 
-    if (regime_ == BrownianRegime::continuum) {
-        // (2kT/3mu)(1/di + Abar/di^2 + 1/dj + Abar/dj^2)(di + dj), d = a x, x = m^(1/3)
-        const double c = 2.0 * kT_ / (3.0 * gas_.mu);
-        // C <= slip.bound(Kn) = 1 + (A1 + A2) 2 lambda / d
-        const double b = 2.0 * lambda_ * (slip_.A1 + slip_.A2) / a_;
-        terms_ = {{2.0 * c, one, one},
-                  {c, minusThird, third},         {c, third, minusThird},
-                  {c * b, minusThird, one},       {c * b, one, minusThird},
-                  {c * b, minusTwoThirds, third}, {c * b, third, minusTwoThirds}};
-    } else {
-        // cfm (xi + xj)^2 (mi^(-1/2) + mj^(-1/2)), cfm = (pi/4) a^2 sqrt(8kT/pi)
-        const double c = 0.25 * pi * a_ * a_ * std::sqrt(8.0 * kT_ / pi);
-        terms_ = {{c, sixth, one},           {c, one, sixth},
-                  {c, twoThirds, minusHalf}, {c, minusHalf, twoThirds},
-                  {2.0 * c, minusSixth, third}, {2.0 * c, third, minusSixth}};
+    // (2kT/3mu)(1/di + Abar/di^2 + 1/dj + Abar/dj^2)(di + dj), d = a x, x = m^(1/3)
+    const double cc = 2.0 * kT_ / (3.0 * gas_.mu);
+    // C <= slip.bound(Kn) = 1 + (A1 + A2) 2 lambda / d
+    const double b = 2.0 * lambda_ * (slip_.A1 + slip_.A2) / a_;
+    const std::vector<MajorantTerm> continuumTerms{
+        {2.0 * cc, one, one},
+        {cc, minusThird, third},          {cc, third, minusThird},
+        {cc * b, minusThird, one},        {cc * b, one, minusThird},
+        {cc * b, minusTwoThirds, third},  {cc * b, third, minusTwoThirds}};
+    // cfm (xi + xj)^2 (mi^(-1/2) + mj^(-1/2)), cfm = (pi/4) a^2 sqrt(8kT/pi)
+    const double cf = 0.25 * pi * a_ * a_ * std::sqrt(8.0 * kT_ / pi);
+    const std::vector<MajorantTerm> freeMolecularTerms{
+        {cf, sixth, one},                 {cf, one, sixth},
+        {cf, twoThirds, minusHalf},       {cf, minusHalf, twoThirds},
+        {2.0 * cf, minusSixth, third},    {2.0 * cf, third, minusSixth}};
+
+    switch (regime_) {
+    case BrownianRegime::freeMolecular: terms_ = freeMolecularTerms; break;
+    case BrownianRegime::continuum: terms_ = continuumTerms; break;
+    case BrownianRegime::transition:
+        // Both, as two groups: the sampler takes the one of the lesser sum
+        terms_ = freeMolecularTerms;
+        for (MajorantTerm t : continuumTerms) {
+            t.coeff *= transitionContinuumMargin;
+            t.group = 1;
+            terms_.push_back(t);
+        }
+        break;
     }
 }
 

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 #include "coagulation/kernels/CoagulationKernel.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -9,7 +10,8 @@
 
 namespace coag {
 
-double CoagulationKernel::majorant(const ParticleType& a, const ParticleType& b) const
+double CoagulationKernel::majorant(const ParticleType& a, const ParticleType& b,
+                                   int group) const
 {
     const std::size_t nb = static_cast<std::size_t>(nBasis());
     double stackA[16], stackB[16];
@@ -26,9 +28,23 @@ double CoagulationKernel::majorant(const ParticleType& a, const ParticleType& b)
     basis(b, pb);
     double sum = 0.0;
     for (const MajorantTerm& t : majorantTerms()) {
-        sum += t.coeff * pa[t.first] * pb[t.second];
+        if (t.group == group) sum += t.coeff * pa[t.first] * pb[t.second];
     }
     return sum;
+}
+
+double CoagulationKernel::majorant(const ParticleType& a, const ParticleType& b) const
+{
+    double least = majorant(a, b, 0);
+    for (int g = 1; g < nMajorantGroups(); ++g) least = std::min(least, majorant(a, b, g));
+    return least;
+}
+
+int CoagulationKernel::nMajorantGroups() const
+{
+    int groups = 1;
+    for (const MajorantTerm& t : majorantTerms()) groups = std::max(groups, t.group + 1);
+    return groups;
 }
 
 ScaledKernel::ScaledKernel(const char* kernel, double K0, std::vector<MajorantTerm> unitTerms)

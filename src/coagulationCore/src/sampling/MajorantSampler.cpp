@@ -58,6 +58,29 @@ void MajorantSampler::configure(const CoagulationKernel& kernel, const std::stri
     std::fill_n(phi2_, maxBasis, 0.0);
     kernel.basis(ParticleType{}, phi_);
 
+    // The groups in order, each with terms: group g's are [groupBegin_[g], groupBegin_[g + 1])
+    nGroups_ = 1;
+    groupBegin_[0] = 0;
+    for (std::size_t k = 0; k < terms.size(); ++k) {
+        const int g = terms[k].group;
+        const int previous = k > 0 ? terms[k - 1].group : 0;
+        if (g != previous && g != previous + 1) {
+            throw std::invalid_argument(who + ": kernel '" + kernel.name()
+                                        + "' lists its majorant groups out of order (0, 1, ...)");
+        }
+        if (g == previous + 1) {
+            if (static_cast<std::size_t>(g) >= maxGroups) {
+                throw std::invalid_argument(who + ": kernel '" + kernel.name() + "' has more than "
+                                            + std::to_string(maxGroups) + " majorant groups");
+            }
+            groupBegin_[g] = k;
+            nGroups_ = static_cast<std::size_t>(g) + 1;
+        }
+    }
+    groupBegin_[nGroups_] = terms.size();
+    activeBegin_ = 0;
+    activeEnd_ = groupBegin_[1];
+
     nColumns_ = 0;
     nTreeColumns_ = 0;
     nTerms_ = 0;
@@ -75,7 +98,7 @@ void MajorantSampler::configure(const CoagulationKernel& kernel, const std::stri
     }
     std::fill_n(termRate_, maxTerms, 0.0);
     // No term (K = 0): rateSum() is zero and no pair is ever proposed
-    lastTerm_ = nTerms_ > 0 ? nTerms_ - 1 : 0;
+    lastTerm_ = activeEnd_ > 0 ? activeEnd_ - 1 : 0;
     std::fill_n(leaf_, QuantizedSumTree::maxColumns, 0.0);
     std::fill_n(columnTotals_, QuantizedSumTree::maxColumns, 0.0);
 }

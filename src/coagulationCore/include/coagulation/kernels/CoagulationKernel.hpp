@@ -11,11 +11,13 @@
 
 namespace coag {
 
-//- One term of a product-form majorant: coeff * phi_first(z1) * phi_second(z2).
+//- One term of a product-form majorant: coeff * phi_first(z1) * phi_second(z2), in the
+//  majorant `group` (0 unless the kernel gives several).
 struct MajorantTerm {
     double coeff;
     int first;
     int second;
+    int group = 0;
 };
 
 //- Symmetric coagulation kernel K(z1,z2) with a majorant in product-sum form
@@ -23,6 +25,10 @@ struct MajorantTerm {
 //  with basis functions phi_b >= 0 and coeff_t > 0. The particle algorithms select pairs
 //  from Khat and accept with probability K/Khat (fictitious jumps otherwise). A majorant
 //  without terms is K = 0 (NoCoagulationKernel).
+//  A kernel may give several majorants, each a group of terms (groups 0, 1, ..., their terms
+//  listed in that order), each >= K on its own: the sampler proposes from the one whose sum
+//  over the population is the least at the time (as MOpS chooses between its free-molecular
+//  and slip-flow majorants), so the fictitious jumps are those of the tighter one.
 class CoagulationKernel {
 public:
     virtual ~CoagulationKernel() = default;
@@ -36,8 +42,14 @@ public:
     //  instead of through the sum tree). Default: false.
     virtual bool constantBasis(int b) const { (void)b; return false; }
 
-    //- Evaluates the majorant sum (non-virtual helper).
+    //- The majorant of one group at (a, b) (non-virtual helper)
+    double majorant(const ParticleType& a, const ParticleType& b, int group) const;
+
+    //- The least of the groups' majorants at (a, b): the tightest bound K <= Khat there
     double majorant(const ParticleType& a, const ParticleType& b) const;
+
+    //- The number of majorant groups (1 + the largest group of a term; 1 without terms)
+    int nMajorantGroups() const;
 };
 
 //- The kernels below: K0 times a fixed shape, whose product-sum majorant is the shape's
