@@ -78,12 +78,10 @@ void MajorantSampler::configure(const CoagulationKernel& kernel, const std::stri
         }
     }
     groupBegin_[nGroups_] = terms.size();
-    activeBegin_ = 0;
-    activeEnd_ = groupBegin_[1];
 
     nColumns_ = 0;
     nTreeColumns_ = 0;
-    nTerms_ = 0;
+    std::size_t k = 0;
     for (const MajorantTerm& t : terms) {
         if (t.first < 0 || t.first >= nb || t.second < 0 || t.second >= nb || !(t.coeff > 0.0)
             || !std::isfinite(t.coeff)) {
@@ -91,16 +89,51 @@ void MajorantSampler::configure(const CoagulationKernel& kernel, const std::stri
                                         + "' has an invalid majorant term (coeff must be > 0, "
                                           "basis indices in [0, nBasis))");
         }
-        termCoeff_[nTerms_] = t.coeff;
-        termFirst_[nTerms_] = columnFor(t.first, false, who);
-        termSecond_[nTerms_] = columnFor(t.second, weightedSecond_, who);
-        ++nTerms_;
+        allCoeff_[k] = t.coeff;
+        allFirst_[k] = columnFor(t.first, false, who);
+        allSecond_[k] = columnFor(t.second, weightedSecond_, who);
+        ++k;
     }
+    activate(0);
     std::fill_n(termRate_, maxTerms, 0.0);
     // No term (K = 0): rateSum() is zero and no pair is ever proposed
-    lastTerm_ = activeEnd_ > 0 ? activeEnd_ - 1 : 0;
+    lastTerm_ = nTerms_ > 0 ? nTerms_ - 1 : 0;
     std::fill_n(leaf_, QuantizedSumTree::maxColumns, 0.0);
     std::fill_n(columnTotals_, QuantizedSumTree::maxColumns, 0.0);
+}
+
+void MajorantSampler::activate(std::size_t g)
+{
+    activeGroup_ = g;
+    nTerms_ = groupBegin_[g + 1] - groupBegin_[g];
+    std::copy_n(allCoeff_ + groupBegin_[g], nTerms_, termCoeff_);
+    std::copy_n(allFirst_ + groupBegin_[g], nTerms_, termFirst_);
+    std::copy_n(allSecond_ + groupBegin_[g], nTerms_, termSecond_);
+}
+
+double MajorantSampler::leastGroupRateSum(std::size_t n)
+{
+    double least = 0.0;
+    std::size_t best = 0;
+    for (std::size_t g = 0; g < nGroups_; ++g) {
+        double sum = 0.0;
+        for (std::size_t k = groupBegin_[g]; k < groupBegin_[g + 1]; ++k) {
+            allRate_[k] = allCoeff_[k] * columnTotal(columns_[allFirst_[k]], n)
+                          * columnTotal(columns_[allSecond_[k]], n);
+            sum += allRate_[k];
+        }
+        if (g == 0 || sum < least) {
+            least = sum;
+            best = g;
+        }
+    }
+    if (best != activeGroup_) activate(best);
+    lastTerm_ = 0;
+    for (std::size_t k = 0; k < nTerms_; ++k) {
+        termRate_[k] = allRate_[groupBegin_[best] + k];
+        if (termRate_[k] > 0.0) lastTerm_ = k;
+    }
+    return least;
 }
 
 } // namespace coag

@@ -105,8 +105,8 @@ public:
 
     //- sum_t coeff_t S_first,t S_second,t over n >= 2 particles (0 for fewer); keeps the
     //  per-term rates and the column totals for propose() (so call it after every change).
-    //  With several majorant groups: the least group's sum, and that group is the one
-    //  propose() and the pair rates use until the next call.
+    //  With several majorant groups: the least group's sum, and that group's terms are the
+    //  ones propose() and the pair rates use until the next call.
     double rateSum(std::size_t n)
     {
         double sum = 0.0;
@@ -114,21 +114,13 @@ public:
             for (std::size_t c = 0; c < nTreeColumns_; ++c) {
                 columnTotals_[c] = tree_.total(c);
             }
-            for (std::size_t g = 0; g < nGroups_; ++g) {
-                double groupSum = 0.0;
-                std::size_t last = groupBegin_[g];
-                for (std::size_t k = groupBegin_[g]; k < groupBegin_[g + 1]; ++k) {
-                    termRate_[k] = termCoeff_[k] * columnTotal(columns_[termFirst_[k]], n)
-                                   * columnTotal(columns_[termSecond_[k]], n);
-                    groupSum += termRate_[k];
-                    if (termRate_[k] > 0.0) last = k;
-                }
-                if (g == 0 || groupSum < sum) {
-                    sum = groupSum;
-                    lastTerm_ = last;
-                    activeBegin_ = groupBegin_[g];
-                    activeEnd_ = groupBegin_[g + 1];
-                }
+            if (nGroups_ > 1) return leastGroupRateSum(n);
+            lastTerm_ = 0;
+            for (std::size_t k = 0; k < nTerms_; ++k) {
+                termRate_[k] = termCoeff_[k] * columnTotal(columns_[termFirst_[k]], n)
+                               * columnTotal(columns_[termSecond_[k]], n);
+                sum += termRate_[k];
+                if (termRate_[k] > 0.0) lastTerm_ = k;
             }
         }
         return sum;
@@ -217,8 +209,7 @@ public:
     }
 
     //- The proposal rate of the pair (p1, p2) in the rateSum() units: sum_t coeff_t F_t(p1)
-    //  S_t(p2) over the active group's terms, F and S the store's values of the term's
-    //  columns. In the tree these are the
+    //  S_t(p2) over the active terms, F and S the store's values of the term's columns. In the tree these are the
     //  quantised majorants QuantizedSumTree::quantised() of phi (* w), so the rate is
     //  >= Khat(z1, z2) (* w2) >= K (* w2), and the target rate (K, times w2 when the second
     //  factors are weighted: SWA) over it is the exact acceptance (thinning); in the bins and
@@ -229,7 +220,7 @@ public:
         kernel_->basis(p1.type, phi_);
         kernel_->basis(p2.type, phi2_);
         double sum = 0.0;
-        for (std::size_t k = activeBegin_; k < activeEnd_; ++k) {
+        for (std::size_t k = 0; k < nTerms_; ++k) {
             sum += termCoeff_[k] * columnValue(columns_[termFirst_[k]], phi_, p1.weight)
                    * columnValue(columns_[termSecond_[k]], phi2_, p2.weight);
         }
@@ -247,7 +238,7 @@ public:
     double pairRateAt(std::size_t j1, std::size_t j2)
     {
         double sum = 0.0;
-        for (std::size_t k = activeBegin_; k < activeEnd_; ++k) {
+        for (std::size_t k = 0; k < nTerms_; ++k) {
             sum += termCoeff_[k] * leafValue(columns_[termFirst_[k]], j1)
                    * leafValue(columns_[termSecond_[k]], j2);
         }
@@ -314,11 +305,18 @@ private:
         }
     }
 
+    //- rateSum() of several groups: every group's sum from the all* arrays; the least one's
+    //  terms made the active ones (termCoeff_ ...) and its rates termRate_
+    double leastGroupRateSum(std::size_t n);
+
+    //- The terms of group g made the active ones
+    void activate(std::size_t g);
+
     //- The term of a proposal at u in [0, rateSum): u past the others' rates (round-off) gives
     //  the last positive one
     std::size_t chooseTerm(double u) const
     {
-        for (std::size_t k = activeBegin_; k < lastTerm_; ++k) {
+        for (std::size_t k = 0; k < lastTerm_; ++k) {
             if (u < termRate_[k]) return k;
             u -= termRate_[k];
         }
@@ -436,13 +434,17 @@ private:
     double phi_[maxBasis] = {};
     double phi2_[maxBasis] = {};
     std::size_t lastTerm_ = 0;       // rateSum(): the last term with a positive rate
-    //- The majorant groups: group g's terms are [groupBegin_[g], groupBegin_[g + 1]); the
-    //  active one (rateSum's least) is [activeBegin_, activeEnd_)
+    //- Several majorant groups: all their terms (group g's are [groupBegin_[g],
+    //  groupBegin_[g + 1])), the group whose terms are the active ones above, and the
+    //  per-term rates of the last rateSum(). One group: the active terms are all the terms.
     static constexpr std::size_t maxGroups = 4;
     std::size_t nGroups_ = 1;
     std::size_t groupBegin_[maxGroups + 1] = {};
-    std::size_t activeBegin_ = 0;
-    std::size_t activeEnd_ = 0;
+    std::size_t activeGroup_ = 0;
+    double allCoeff_[maxTerms] = {};
+    std::size_t allFirst_[maxTerms] = {};
+    std::size_t allSecond_[maxTerms] = {};
+    double allRate_[maxTerms] = {};
     //- lookAhead()'s (or finishLookAhead()'s) draws for the next proposeAhead(): its term and
     //  the tree columns' walks to their blocks
     struct Ahead {
