@@ -6,6 +6,7 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 
 namespace coag {
 
@@ -120,18 +121,14 @@ Eigen::VectorXd DiscreteSmoluchowski::rhs(const Eigen::VectorXd& n) const
     return out;
 }
 
-Eigen::VectorXd DiscreteSmoluchowski::integrate(const Eigen::VectorXd& n0, double t0,
-                                                double t1) const
+Eigen::VectorXd integrateDormandPrince(const OdeRhs& f, const Eigen::VectorXd& y0, double t0,
+                                       double t1, double relTol, double absTol,
+                                       std::size_t& accepted, std::size_t& rejected,
+                                       const char* who)
 {
-    if (static_cast<std::size_t>(n0.size()) != L_) {
-        throw std::invalid_argument("coag::DiscreteSmoluchowski::integrate: vector size must be L");
-    }
-    if (!(t1 >= t0)) {
-        throw std::invalid_argument("coag::DiscreteSmoluchowski::integrate: need t1 >= t0");
-    }
-    accepted_ = 0;
-    rejected_ = 0;
-    Eigen::VectorXd y = n0;
+    accepted = 0;
+    rejected = 0;
+    Eigen::VectorXd y = y0;
     if (t1 == t0) return y;
 
     // Dormand–Prince 5(4) tableau.
@@ -154,12 +151,12 @@ Eigen::VectorXd DiscreteSmoluchowski::integrate(const Eigen::VectorXd& n0, doubl
 
     const Eigen::Index n = y.size();
     Eigen::VectorXd k1(n), k2(n), k3(n), k4(n), k5(n), k6(n), k7(n), ys(n), ynew(n), err(n);
-    rhs(y, k1);
+    f(y, k1);
 
     auto norm = [&](const Eigen::VectorXd& e, const Eigen::VectorXd& ya, const Eigen::VectorXd& yb) {
         double s = 0.0;
         for (Eigen::Index i = 0; i < n; ++i) {
-            const double sc = absTol_ + relTol_ * std::max(std::abs(ya[i]), std::abs(yb[i]));
+            const double sc = absTol + relTol * std::max(std::abs(ya[i]), std::abs(yb[i]));
             const double r = sc > 0.0 ? e[i] / sc : (e[i] == 0.0 ? 0.0 : 1e300);
             s += r * r;
         }
@@ -185,35 +182,49 @@ Eigen::VectorXd DiscreteSmoluchowski::integrate(const Eigen::VectorXd& n0, doubl
             last = true;
         }
         ys = y + h * a21 * k1;
-        rhs(ys, k2);
+        f(ys, k2);
         ys = y + h * (a31 * k1 + a32 * k2);
-        rhs(ys, k3);
+        f(ys, k3);
         ys = y + h * (a41 * k1 + a42 * k2 + a43 * k3);
-        rhs(ys, k4);
+        f(ys, k4);
         ys = y + h * (a51 * k1 + a52 * k2 + a53 * k3 + a54 * k4);
-        rhs(ys, k5);
+        f(ys, k5);
         ys = y + h * (a61 * k1 + a62 * k2 + a63 * k3 + a64 * k4 + a65 * k5);
-        rhs(ys, k6);
+        f(ys, k6);
         ynew = y + h * (b1 * k1 + b3 * k3 + b4 * k4 + b5 * k5 + b6 * k6);
-        rhs(ynew, k7);
+        f(ynew, k7);
         err = h * (e1 * k1 + e3 * k3 + e4 * k4 + e5 * k5 + e6 * k6 + e7 * k7);
         const double en = norm(err, y, ynew);
         if (en <= 1.0) {
-            ++accepted_;
+            ++accepted;
             t = last ? t1 : t + h;
             y.swap(ynew);
             k1.swap(k7);  // FSAL
             const double fac = en > 0.0 ? 0.9 * std::pow(en, -0.2) : 5.0;
             h *= std::min(5.0, std::max(0.2, fac));
         } else {
-            ++rejected_;
+            ++rejected;
             h *= std::max(0.2, 0.9 * std::pow(en, -0.2));
         }
         if (h < hmin && t < t1) {
-            throw std::runtime_error("coag::DiscreteSmoluchowski::integrate: step size underflow");
+            throw std::runtime_error(std::string(who) + ": step size underflow");
         }
     }
     return y;
+}
+
+Eigen::VectorXd DiscreteSmoluchowski::integrate(const Eigen::VectorXd& n0, double t0,
+                                                double t1) const
+{
+    if (static_cast<std::size_t>(n0.size()) != L_) {
+        throw std::invalid_argument("coag::DiscreteSmoluchowski::integrate: vector size must be L");
+    }
+    if (!(t1 >= t0)) {
+        throw std::invalid_argument("coag::DiscreteSmoluchowski::integrate: need t1 >= t0");
+    }
+    return integrateDormandPrince(
+        [this](const Eigen::VectorXd& n, Eigen::VectorXd& out) { rhs(n, out); }, n0, t0, t1,
+        relTol_, absTol_, accepted_, rejected_, "coag::DiscreteSmoluchowski::integrate");
 }
 
 // ---------------------------------------------------------- FiniteDifferenceSmoluchowski

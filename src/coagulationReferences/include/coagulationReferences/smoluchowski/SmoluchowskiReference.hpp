@@ -8,11 +8,25 @@
 #include <Eigen/Dense>
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 //- Deterministic references for the discrete Smoluchowski equation (sizes l = 1, 2, ...,
 //  vector index l-1; the kernel is evaluated on ParticleType{mass = l}).
 namespace coag {
+
+//- The right hand side of an autonomous ODE system y' = f(y): out = f(y).
+using OdeRhs = std::function<void(const Eigen::VectorXd&, Eigen::VectorXd&)>;
+
+//- y(t1) from y(t0) = y0 by the adaptive embedded Dormand–Prince 5(4) Runge–Kutta pair (FSAL,
+//  local extrapolation, error per component scaled by absTol + relTol*max(|y|, |ynew|), RMS
+//  norm, step factor 0.9 err^{-1/5} in [0.2, 5], the first step after Hairer, Norsett &
+//  Wanner II.4). Counts the accepted and rejected steps; throws std::runtime_error, naming
+//  who, if the step size underflows.
+Eigen::VectorXd integrateDormandPrince(const OdeRhs& f, const Eigen::VectorXd& y0, double t0,
+                                       double t1, double relTol, double absTol,
+                                       std::size_t& accepted, std::size_t& rejected,
+                                       const char* who);
 
 //- Dense kernel matrix K(i+1, j+1), i, j < L. Throws std::invalid_argument for L == 0 or
 //  L > maxDenseKernelSize (the matrix takes 8 L^2 bytes).
