@@ -16,9 +16,13 @@ lines. This checks, at every write of the log:
   - with --csv, patches.csv's rows at that time are the log's lines;
   - with --equal-weights, every leaving particle had the weight W of the log's "weight per
     new particle" (runs without number control in which nothing coagulates under SWA):
-    each patch's number is W times its particles.
+    each patch's number is W times its particles;
+  - with --inflow C QT M (inflow of density C and particle mass M, QT the inlet's volume
+    flux times the time since the start): at the last write the particles booked as entering
+    are Poisson with mean C QT/W (a sum over faces and steps of Poisson counts), within 4
+    standard deviations, and their mass is the count times W M to round-off.
 
-    patchBalance.py LOG [--start FILE] [--csv FILE] [--equal-weights]
+    patchBalance.py LOG [--start FILE] [--csv FILE] [--equal-weights] [--inflow C QT M]
 
 Prints one line per write and exits 1 on the first violation (the message says which).
 """
@@ -84,12 +88,33 @@ def close(a, b, scale):
     return abs(a - b) <= REL * max(abs(scale), 1e-300)
 
 
-def check(log, start=None, csv_path=None, equal_weights=False, out=sys.stdout):
+def check_inflow(totals, weight, c, qt, m, out=sys.stdout):
+    """The booked inflow (the totals of the last write) against c QT/W particles of mass m."""
+    import math
+    n, mass = totals["inParticles"], totals["inMass"]
+    mu = c * qt / weight
+    z = (n - mu) / math.sqrt(mu)
+    print("inflow: %d particles, Poisson mean c_in Q t/W = %.1f (z = %.2f); mass %.10g"
+          % (n, mu, z, mass), file=out)
+    bad = []
+    if not abs(z) <= 4:
+        bad.append("%d particles entered, expected %.1f: z = %.2f" % (n, mu, z))
+    if not close(mass, n * weight * m, mass):
+        bad.append("inflow mass %.17g is not the count times W m = %.17g" % (mass, n * weight * m))
+    return bad
+
+
+def check(log, start=None, csv_path=None, equal_weights=False, inflow=None, out=sys.stdout):
     """Returns a list of violations (empty: the balance holds at every write)."""
     writes, weight = parse_log(log)
     bad = []
     if not writes:
         return ["%s: no 'Coagulation cloud:' block" % log]
+    if inflow is not None:
+        if weight is None:
+            bad.append("%s: no 'weight per new particle' line" % log)
+        else:
+            bad += check_inflow(writes[-1][1], weight, *inflow, out=out)
     before = parse_start(start) if start else {}
     rows = {}
     if csv_path:
@@ -137,8 +162,9 @@ def main(argv):
     ap.add_argument("--start", help="the start time's uniform/coagulationPatchBalance (a restart)")
     ap.add_argument("--csv", help="postProcessing/coagulationBalance/patches.csv")
     ap.add_argument("--equal-weights", action="store_true")
+    ap.add_argument("--inflow", nargs=3, type=float, metavar=("C", "QT", "M"))
     a = ap.parse_args(argv)
-    bad = check(a.log, a.start, a.csv, a.equal_weights)
+    bad = check(a.log, a.start, a.csv, a.equal_weights, a.inflow)
     for b in bad:
         print("FAIL %s: %s" % (a.log, b))
     return 1 if bad else 0

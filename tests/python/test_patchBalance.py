@@ -1,11 +1,14 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 """patchBalance.py (the case tests' check of the per-patch lines against the totals) on
 logs written here: it passes a consistent log and names each kind of inconsistency."""
+import importlib.util
 import os
-import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import patchBalance  # noqa: E402
+# patchBalance.py is the case tests' script beside this file, not a module of the package
+_spec = importlib.util.spec_from_file_location(
+    "patchBalance", os.path.join(os.path.dirname(os.path.abspath(__file__)), "patchBalance.py"))
+patchBalance = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(patchBalance)
 
 BLOCK = """Time = {t}  particles = 10
 Coagulation cloud:
@@ -73,3 +76,19 @@ def test_restart_subtracts_the_start(tmp_path):
     start.write_text(start.read_text().replace("mass 2;", "mass 1.6;"))
     bad = patchBalance.check(log, start=str(start))
     assert len(bad) == 1 and "mass adds up to" in bad[0]
+
+
+def test_inflow_against_its_poisson_mean(tmp_path):
+    # 0 particles entered in GOOD; a log with 10000 entered, W = 0.08, mass 2 each
+    log = tmp_path / "log"
+    text = HEAD + BLOCK.format(**GOOD)
+    text = text.replace("= 0 / 110 / 100", "= 10000 / 110 / 100").replace(
+        "control = 0 + 0 +", "control = 0 + 1600.0000000000002 +")
+    log.write_text(text)
+    # mean c QT/W = 10000 (z = 0), 10400 (z = -3.9), 10500 (z = -4.9)
+    assert patchBalance.check(str(log), inflow=(1e3, 0.8, 2.0)) == []
+    assert patchBalance.check(str(log), inflow=(1e3, 0.832, 2.0)) == []
+    bad = patchBalance.check(str(log), inflow=(1e3, 0.84, 2.0))
+    assert len(bad) == 1 and "z = -4.88" in bad[0]
+    bad = patchBalance.check(str(log), inflow=(1e3, 0.8, 3.0))
+    assert len(bad) == 1 and "not the count times W m" in bad[0]
