@@ -375,7 +375,7 @@ BUGS = {
     "B97": (M + "submodels/transportModels/frozenFlow/frozenFlow.C",
             "        patchIndexTransferLists[n].append(procPatchNeighbours[patchi]);\n",
             "        patchIndexTransferLists[n].append(0);\n",
-            "case_parallel|case_channelParallel",
+            "case_submodels|case_parallel|case_channelParallel",
             "decomposed transfers: an arriving particle placed on the neighbour's first processor patch"),
     "B98": ("src/python/coagulationPost/report.py",
             "        neff = np.sum([a[1] for a in run_arrays], axis=0)\n",
