@@ -2,6 +2,9 @@
 # A run restarted from a written time continues the same random sequence: the
 # restarted run's final particles and moments equal the uninterrupted run's. Inception and
 # inflow through the inlet both draw random numbers (the cells' and the inlet faces' streams).
+# The per-patch totals carried over the restart (0.1/uniform/coagulationPatchBalance) give the
+# uninterrupted run's patches.csv at 0.2; the particles leaving have coagulated, so a patch's
+# mass, number and particle count differ and each must be read back into its own entry.
 . "$(dirname "$0")/caseLib.sh"
 
 full=$(newCase constantKernelDuct restart_full)
@@ -28,6 +31,26 @@ for f in M0 M1 M2 M3 lagrangian/coagulationCloud/mass lagrangian/coagulationClou
 do
     cmp -s "$full/0.2/$f" "$split/0.2/$f" || fail "0.2/$f differs between the full and the restarted run"
 done
+balance="$COAGULATIONFOAM_PYTHON $testsDir/../python/patchBalance.py"
+$balance "$full/log.coagulationFoam" --csv "$full/postProcessing/coagulationBalance/patches.csv" \
+    || fail "full run: the outlet's line does not add up to the totals"
+$balance "$split/log.coagulationFoam.restart" --start "$split/0.1/uniform/coagulationPatchBalance" \
+    --csv "$split/postProcessing/coagulationBalance/patches.csv" \
+    || fail "restarted run: the outlet's line less the start's does not add up to the run's totals"
+"$COAGULATIONFOAM_PYTHON" - "$full/postProcessing/coagulationBalance/patches.csv" \
+    "$split/postProcessing/coagulationBalance/patches.csv" <<'PY' || fail "patches.csv after the restart differs from the full run's"
+import csv, sys
+rows = [{r["patch"]: r for r in csv.DictReader(open(f)) if r["time"] == "0.2"} for f in sys.argv[1:3]]
+assert rows[0] and rows[0].keys() == rows[1].keys(), (rows[0].keys(), rows[1].keys())
+for patch, a in rows[0].items():
+    b = rows[1][patch]
+    assert a["particles"] == b["particles"], (patch, a, b)
+    for q in ("number", "mass"):
+        assert abs(float(a[q]) - float(b[q])) <= 1e-12 * abs(float(a[q])), (patch, q, a, b)
+    n, num, m = float(a["particles"]), float(a["number"]), float(a["mass"])
+    print("%s at 0.2: %d particles, number %.6g, mass %.6g (as the full run)" % (patch, n, num, m))
+    assert m > 1.2 * num, "the particles leaving have hardly coagulated (mass/number %.3f)" % (m / num)
+PY
 n=$(grep -c . "$full/0.2/lagrangian/coagulationCloud/mass" || true)
 [ "$n" -gt 0 ] || fail "no particles written"
-echo "PASS restart: 0.2/M0..M3 and all particles identical after a restart from 0.1 (inception and inflow)"
+echo "PASS restart: 0.2/M0..M3, all particles and patches.csv identical after a restart from 0.1 (inception and inflow)"

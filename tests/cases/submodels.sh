@@ -16,6 +16,13 @@
 #              with U along the duct, no cell ever holds a particle (B24: a zone ignored)
 #   weights    the weight per particle W = Vref/(n V1) with the algorithm's own V1 for SWA,
 #              DSA1 and DSA2 (the sample file's attributes V1 and particleWeight; B22)
+#   threeRanks the duct at rest (U = 0) with a constant-D walk and pure inception, cut into
+#              3 ranks along x: the middle rank has two processor patches, and a particle
+#              walking back from the third rank must arrive on the one it crossed. The
+#              steady profile is symmetric: the particles in the first and last thirds agree
+#              within their Poisson interval (B97: arrivals placed on the first processor
+#              patch send every particle that walks back from the third rank to the first
+#              rank's side)
 #   submodels.sh [name...]   run only the named cases (default: all)
 . "$(dirname "$0")/caseLib.sh"
 
@@ -210,4 +217,46 @@ PY
     passed=$((passed + 1)); echo "ok weights"
 fi
 
-echo "PASS submodels: $passed cases (rebound, two inlets, cellZone inception, W per algorithm)"
+# ---- threeRanks: arrivals on a rank with two processor patches
+if want threeRanks; then
+    c=$(newCase constantKernelDuct submodels_threeRanks)
+    cd "$c"
+    setEntry . 0/U internalField "uniform (0 0 0)"
+    setEntry . 0/U boundaryField/inlet/value "uniform (0 0 0)"
+    setEntry . constant/coagulationProperties kernel/K0 1e-30
+    setEntry . constant/coagulationProperties statisticalWeight/n 64
+    setEntry . constant/coagulationProperties sampling/tRelax 0
+    foamDictionary -entry dispersion -add "{ type constant; D 1e-3; }" constant/coagulationProperties > /dev/null
+    setEntry . system/controlDict deltaT 1e-3
+    setEntry . system/controlDict endTime 0.5
+    setEntry . system/controlDict writeInterval 0.5
+    setEntry . system/decomposeParDict numberOfSubdomains 3
+    setEntry . system/decomposeParDict coeffs/n "(3 1 1)"
+    runApplication decomposePar
+    # at most 120 s, as runSolver (3 ranks on fewer cores: the ranks yield when idle)
+    OMPI_MCA_mpi_yield_when_idle=1 timeout 120 mpirun --oversubscribe -np 3 coagulationFoam -parallel \
+        > log.coagulationFoam 2>&1 \
+        || { tail -20 log.coagulationFoam; fail "threeRanks: coagulationFoam on 3 ranks failed (124: no end within 120 s)"; }
+    checkBalance log.coagulationFoam
+    "$COAGULATIONFOAM_PYTHON" - "$c" <<'PY' || fail "threeRanks: the profile is not symmetric"
+import glob, math, sys
+import h5py
+import numpy as np
+files = sorted(glob.glob(sys.argv[1] + "/postProcessing/coagulationSamples/samples_0_processor*.h5"))
+assert len(files) == 3, files
+x, N = [], []
+for name in files:
+    f = h5py.File(name, "r")
+    W = float(f.attrs["particleWeight"])
+    x.append(f["cellCentres"][:, 0])
+    N.append(f["moments"][-1, :, 0] * 0.004**3 / W)   # particles per cell, last sample
+x, N = np.concatenate(x), np.concatenate(N)
+left, right = N[x < 0.2 / 3].sum(), N[x > 0.4 / 3].sum()
+z = (left - right) / math.sqrt(left + right)
+print("threeRanks: %d particles in the first third, %d in the last (z = %.2f)" % (left, right, z))
+sys.exit(0 if abs(z) <= 4 and left + right > 1000 else 1)
+PY
+    passed=$((passed + 1)); echo "ok threeRanks"
+fi
+
+echo "PASS submodels: $passed cases (rebound, two inlets, cellZone inception, W per algorithm, arrivals on 3 ranks)"

@@ -30,6 +30,16 @@ runApplication coagulationFoam
 checkBalance log.coagulationFoam
 grep "particles in/incepted/out" log.coagulationFoam | tail -1 | awk '{ exit !($4 > 0 && $6 > 0 && $8 > 0) }' \
     || fail "no inflow, inception or outflow"
+# The outlet's line adds up to the totals; the inflow booked over [0, 0.35] is Poisson with
+# mean c_in Q t/W, Q = u h^2 through the 4 mm square inlet, within 4 standard deviations (the
+# per-cell moments below allow |z| <= 6 and pass with 5 % fewer particles entering), and of
+# mass 3 each; every particle keeps the weight W (no coagulation)
+h=$(foamDictionary -entry h -value system/blockMeshDict)
+scale=$(foamDictionary -entry scale -value system/blockMeshDict)
+QT=$(awk -v u=$u -v s="$scale" -v h="$h" 'BEGIN { printf "%.17g", u*(s*h)^2*0.35 }')
+"$COAGULATIONFOAM_PYTHON" "$testsDir/../python/patchBalance.py" log.coagulationFoam \
+    --csv postProcessing/coagulationBalance/patches.csv --equal-weights --inflow $cIn "$QT" 3 \
+    || fail "the outlet's line off the totals, or the booked inflow off c_in Q t"
 
 # no coagulation: particles never interact, so samples further apart than a cell transit
 # (dx/u <= 3.6e-3 s < the sample interval) are independent; no residence-time window

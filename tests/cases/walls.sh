@@ -6,9 +6,13 @@
 # outlet when y < v (L - x)/u, so at steady state the deposited share of what leaves is the
 # triangle's share of the box, v L/(2 u H) = 1/4, whatever the splitting (the flow is steady
 # and uniform and tracking is exact). Checked over [0.3, 0.6] (after the 0.2 s flush) within
-# its binomial 99.9 % interval; the balances close with deposition booked; with the bottom
-# set to rebound nothing deposits; bad patchInteraction entries stop the run naming them.
+# its binomial 99.9 % interval; the balances close with deposition booked; the patch lines
+# add up to the totals at every write; a restart books per patch what the uninterrupted run
+# books (with coagulation, so that a deposited particle's mass is not its number); with the
+# bottom set to rebound nothing deposits; bad patchInteraction entries stop the run naming them.
 . "$(dirname "$0")/caseLib.sh"
+# patchBalance log [options]: the per-patch lines against the totals at every write
+patchBalance() { "$COAGULATIONFOAM_PYTHON" "$testsDir/../python/patchBalance.py" "$@"; }
 
 box=$(newCase constantKernelDuct walls_stick)
 cd "$box"
@@ -62,6 +66,10 @@ foamDictionary -entry functions -remove system/controlDict > /dev/null
 rm -rf "$workDir/walls_rebound"; cp -r . "$workDir/walls_rebound"
 runApplication coagulationFoam
 checkBalance log.coagulationFoam
+# Outlet and bottom add up to the totals at 0.3 and 0.6, patches.csv holds the log's lines,
+# and (nothing coagulates) every particle left with the weight W it was born with
+patchBalance log.coagulationFoam --csv postProcessing/coagulationBalance/patches.csv --equal-weights \
+    || fail "the per-patch balance does not add up to the totals"
 
 "$COAGULATIONFOAM_PYTHON" - postProcessing/coagulationBalance/patches.csv <<'PY' || fail "deposited share off v L/(2 u H)"
 import csv, math, sys
@@ -83,28 +91,43 @@ PY
 # Stopped at 0.3 and restarted: patches.csv counts from the first start (the totals carried
 # in 0.3/uniform/coagulationPatchBalance), so its rows at 0.6 are the uninterrupted run's
 # (a restart continues the same random streams): the same particle counts, number and mass
-# to round-off (the sums are split at the restart)
-r="$workDir/walls_restart"; rm -rf "$r"; cp -r "$workDir/walls_rebound" "$r"
-rm -rf "$r"/0.[0-9]* "$r/postProcessing" "$r"/log.coagulationFoam*
-foamDictionary -entry patchInteraction/patches/bottom -set stick "$r/constant/coagulationProperties" > /dev/null
+# to round-off (the sums are split at the restart). With coagulation (K0 1e-6): the particles
+# that leave have coagulated, so each patch's mass differs from its number and a total read
+# back into the wrong entry shows. The restarted run's patch lines less the start's add up to
+# its own totals.
+coag="$workDir/walls_coag"; rm -rf "$coag"; cp -r "$workDir/walls_rebound" "$coag"
+foamDictionary -entry patchInteraction/patches/bottom -set stick "$coag/constant/coagulationProperties" > /dev/null
+setEntry "$coag" constant/coagulationProperties kernel/K0 1e-6
+r="$workDir/walls_restart"; rm -rf "$r"; cp -r "$coag" "$r"
+(cd "$coag" && runApplication coagulationFoam)
+patchBalance "$coag/log.coagulationFoam" --csv "$coag/postProcessing/coagulationBalance/patches.csv" \
+    || fail "coagulating walls: the per-patch balance does not add up to the totals"
 setEntry "$r" system/controlDict endTime 0.3
 (cd "$r" && runApplication -s first coagulationFoam)
 setEntry "$r" system/controlDict endTime 0.6
 (cd "$r" && runApplication -s restart coagulationFoam)
 grep -q "Starting time loop" "$r/log.coagulationFoam.restart" || fail "restart did not run"
-"$COAGULATIONFOAM_PYTHON" - postProcessing/coagulationBalance/patches.csv \
+patchBalance "$r/log.coagulationFoam.restart" --start "$r/0.3/uniform/coagulationPatchBalance" \
+    --csv "$r/postProcessing/coagulationBalance/patches.csv" \
+    || fail "restarted: the per-patch balance less the start's does not add up to the run's totals"
+"$COAGULATIONFOAM_PYTHON" - "$coag/postProcessing/coagulationBalance/patches.csv" \
     "$r/postProcessing/coagulationBalance/patches.csv" <<'PY' || fail "patches.csv after a restart differs from the uninterrupted run"
 import csv, sys
-rows = [{(r["patch"], r["kind"]): r for r in csv.DictReader(open(f)) if r["time"] == "0.6"}
-        for f in sys.argv[1:3]]
-assert rows[0] and rows[0].keys() == rows[1].keys(), (rows[0].keys(), rows[1].keys())
-for key, a in rows[0].items():
-    b = rows[1][key]
-    assert a["particles"] == b["particles"], (key, a, b)
-    for q in ("number", "mass"):
-        assert abs(float(a[q]) - float(b[q])) <= 1e-12 * abs(float(a[q])), (key, q, a, b)
+for t in ("0.3", "0.6"):
+    rows = [{(r["patch"], r["kind"]): r for r in csv.DictReader(open(f)) if r["time"] == t}
+            for f in sys.argv[1:3]]
+    assert rows[0] and rows[0].keys() == rows[1].keys(), (t, rows[0].keys(), rows[1].keys())
+    for key, a in rows[0].items():
+        b = rows[1][key]
+        assert a["particles"] == b["particles"], (t, key, a, b)
+        for q in ("number", "mass"):
+            assert abs(float(a[q]) - float(b[q])) <= 1e-12 * abs(float(a[q])), (t, key, q, a, b)
+bottom = rows[0][("bottom", "deposited")]
+ratio = float(bottom["mass"]) / float(bottom["number"])
+print("deposited at 0.6: %s particles, mean mass %.3f" % (bottom["particles"], ratio))
+assert ratio > 1.2, "the deposited particles have hardly coagulated: mass / number %.3f" % ratio
 PY
-echo "ok restart: patches.csv at 0.6 as in the uninterrupted run"
+echo "ok restart: patches.csv at 0.3 and 0.6 as in the uninterrupted run, with coagulation"
 
 # The same box with the bottom rebounding: nothing deposits, the balances close
 cd "$workDir/walls_rebound"

@@ -56,6 +56,38 @@ TEST_P(PlantedBugCellTest, ParticleBoundHoldsAfterInception)
     EXPECT_GE(stats.halvings, 5u) << GetParam();
 }
 
+//- maxParticles is the largest count a cell may hold: the halving comes when an inception
+//  takes the cell past it, to maxParticles + 1, never at maxParticles itself. A cell growing by
+//  inception alone (a negligible kernel), in steps short enough for at most one inception each
+//  (0.01 expected per step), holds exactly maxParticles after some step before its first
+//  halving; halving at >= maxParticles would stop it at maxParticles - 1. The first halving
+//  then leaves (maxParticles + 1)/2 rounded down or up.
+TEST_P(PlantedBugCellTest, CellReachesTheBoundExactlyBeforeItsFirstHalving)
+{
+    const std::size_t maxParticles = 16;
+    ConstantKernel kernel(1e-12);
+    InceptionModel inception;
+    inception.rate = 1.0;  // V = 1, dt = 0.01: 0.01 inceptions expected per step
+    NumberControl ctl;
+    ctl.maxParticles = maxParticles;
+    auto alg = makeCellAlgorithm(GetParam(), kernel, inception, ctl);
+    Rng rng(seedFor(2105, 0));
+    CellPopulation pop;
+    pop.volume = 1.0;
+    StepStatistics stats;
+    std::size_t largest = 0;
+    int steps = 0;
+    for (; steps < 100000 && stats.halvings == 0; ++steps) {
+        alg->advance(pop, 0.01, rng, stats);
+        if (stats.halvings == 0) largest = std::max(largest, pop.particles.size());
+    }
+    ASSERT_EQ(stats.halvings, 1u) << GetParam() << " after " << steps << " steps";
+    EXPECT_EQ(stats.coagulations, 0u) << GetParam();
+    EXPECT_EQ(largest, maxParticles) << GetParam() << ": the largest count before the first halving";
+    EXPECT_GE(pop.particles.size(), maxParticles / 2) << GetParam();
+    EXPECT_LE(pop.particles.size(), maxParticles / 2 + 1) << GetParam();
+}
+
 //- The incepted mass is sum(weight * mass) of the incepted particles, also for an inception
 //  weight other than 1, and it is exactly the growth of the represented mass (no number
 //  control). weight 2.5, mass 0.75: every product and partial sum is exact in binary.

@@ -106,7 +106,8 @@ def write_case(case, x, seed):
 def test_report_interval_and_columns(tmp_path):
     """One synthetic run (AR(1), tau 10, 400 cells x 4 moments, mean 100): the report's
     ci covers 100 in 90..99 % of the cell-moments, ciIid in under 70 %; moments_full.csv
-    has Mk_neff, Mk_tauInt, Mk_ci95_iid.  Four runs: ci from the realisation means."""
+    has Mk_neff, Mk_tauInt, Mk_ci95_iid.  Four runs: ci from the realisation means, n_eff their
+    sum, tauInt their mean."""
     rng = np.random.default_rng(18)
     runs = []
     for r in range(4):
@@ -128,8 +129,14 @@ def test_report_interval_and_columns(tmp_path):
         np.testing.assert_allclose(f["M%d_ci95_iid" % k], res["ciIid"][:, k], rtol=1e-11)
         np.testing.assert_allclose(f["M%d_ci95" % k], res["ci"][:, k], rtol=1e-11)
     pooled = report.compute(runs, analytic_kind="none")
-    means = np.array([report.compute([r], analytic_kind="none")["mean"] for r in runs])
+    singles = [report.compute([r], analytic_kind="none") for r in runs]
+    means = np.array([one["mean"] for one in singles])
     np.testing.assert_allclose(pooled["ci"], st.standard_error_from_realisations(means)[1],
+                               rtol=1e-10)
+    # pooled realisations: n_eff is their sum (independent runs), tauInt their mean
+    np.testing.assert_allclose(pooled["neff"], np.sum([one["neff"] for one in singles], axis=0),
+                               rtol=1e-10)
+    np.testing.assert_allclose(pooled["tauInt"], np.mean([one["tauInt"] for one in singles], axis=0),
                                rtol=1e-10)
     cover4 = np.mean(np.abs(pooled["mean"] - 100) <= pooled["ci"])
     print("report: 4 realisations coverage %.3f" % cover4)

@@ -8,8 +8,10 @@
 #   FULL=1 run.sh B20          the whole case suite (ctest -L case) instead of the targeted tests
 #   LOGDIR=dir                 logs per bug (default /tmp/plantedBugs): BUG.diff, BUG.build.log,
 #                              BUG.ctest.log; one line per bug appended to LOGDIR/summary
+#   JOBS=1                     ctest -j (default 2; 1 where the machine's cores are shared)
+#   TESTS=regex                this ctest -R regex instead of the bug's targeted tests
 # Needs a built tree (./Allwmake) with build/ configured; the bug's file must be unmodified.
-# Runs niced, ctest -j2. The clean tree is rebuilt at the end if a C++ bug was planted.
+# Runs niced, ctest -j${JOBS:-2}. The clean tree is rebuilt at the end if a C++ bug was planted.
 set -u
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../../.." && pwd)"
@@ -51,8 +53,9 @@ for b in "${ids[@]}"; do
     esac
     if [ -z "$status" ]; then
         if [ -n "${FULL:-}" ]; then sel=(-L case); what="full case suite"
+        elif [ -n "${TESTS:-}" ]; then sel=(-R "$TESTS"); what="tests $TESTS"
         else sel=(-R "$($bugs tests "$b")"); what="targeted"; fi
-        (cd build && nice -n 10 ctest "${sel[@]}" -j2 --output-on-failure) > "$logDir/$b.ctest.log" 2>&1
+        (cd build && nice -n 10 ctest "${sel[@]}" -j"${JOBS:-2}" --output-on-failure) > "$logDir/$b.ctest.log" 2>&1
         failed=$(grep -E "^ *[0-9]+/[0-9]+ Test +#[0-9]+: .*\*\*\*" "$logDir/$b.ctest.log" \
                  | sed -E 's/.*Test +#[0-9]+: ([^ ]+) .*/\1/' | sort | tr '\n' ' ')
         passed=$(grep -E "^ *[0-9]+/[0-9]+ Test +#[0-9]+: .* Passed" "$logDir/$b.ctest.log" \

@@ -9,7 +9,6 @@
 #include "IFstream.H"
 #include "OFstream.H"
 #include "coagulationCloud.H"
-#include "processorPolyPatch.H"
 #include "OSspecific.H"
 
 namespace Foam
@@ -185,7 +184,12 @@ void Foam::coagulation::cloudFunctions::massBalance::writePatches() const
             csv() << "time,patch,kind,particles,number,mass" << nl;
         }
     }
-    forAll(boundary, patchi)
+    // The patches every processor has, in the same order: the processor
+    // patches come after them and differ in number between processors, so
+    // a reduction per processor patch would pair one processor's reductions
+    // with another's next collective (three or more ranks: the middle ones
+    // have two processor patches)
+    for (label patchi = 0; patchi < boundary.nNonProcessor(); ++patchi)
     {
         particleBalance b(patches_[patchi]);
         reduce(b.particles, sumOp<label>());
@@ -194,7 +198,7 @@ void Foam::coagulation::cloudFunctions::massBalance::writePatches() const
         b.particles += previous_[patchi].particles;
         b.number += previous_[patchi].number;
         b.mass += previous_[patchi].mass;
-        if (isA<processorPolyPatch>(boundary[patchi]) || b.particles == 0)
+        if (b.particles == 0)
         {
             continue;
         }
