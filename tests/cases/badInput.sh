@@ -153,6 +153,20 @@ coagulationFoam -case "$ok" > "$ok/log" 2>&1 || { tail -20 "$ok/log"; fail "stop
 [ "$(cd "$ok" && foamListTimes -noZero | tr '\n' ' ')" = "0.5 " ] || fail "stopAt nextWrite: did not stop at the first write, 0.5"
 echo "ok stopAt nextWrite runs to the first write"
 
+# The Brownian kernel and the particles' material
+brownian="type Brownian; T 1500; p 1e5;"
+expectFatal brownianNoParticles "needs the particles' material" -entry kernel -set "{ $brownian }"
+(cd "$base" && foamDictionary constant/coagulationProperties -entry particles \
+    -add "{ density 1800; massUnit 9.42e-22; }" > /dev/null)
+expectFatal brownianRegime     "slipFlow"         -entry kernel -set "{ $brownian regime slipFlow; }"
+expectFatal brownianTypo       "regim"            -entry kernel -set "{ $brownian regim transition; }"
+expectFatal brownianNoTField   "'Brownian'.*'Tgas'.*0/Tgas" -entry kernel -set "{ type Brownian; T Tgas; p 1e5; }"
+expectFatal brownianDefaultT   "'Brownian'.*'T'.*0/T" -entry kernel -set "{ type Brownian; p 1e5; }"
+expectFatal brownianNegativeP  "'p' = -1"         -entry kernel -set "{ type Brownian; T 1500; p -1; }"
+expectFatal brownianMu         "sutherlnd"        -entry kernel -set "{ $brownian mu sutherlnd; }"
+expectFatal particlesDensity   "'density' = -1"   -entry particles/density -set -1
+expectFatal particlesTypo      "densty"           -entry particles -set "{ densty 1800; }"
+
 (cd "$base" && foamDictionary constant/coagulationProperties -entry algorithm -set DSA1 > /dev/null)
 expectFatal dsaNumberControl   "maxParticlesPerCell" -entry numberControl -set "{ maxParticlesPerCell 100; }"
 

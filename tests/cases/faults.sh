@@ -388,6 +388,23 @@ if want noKernel; then
     grep -q "particles in/incepted/out  = 0 / [1-9]" "$c/log" || fail "noKernel: no inception"
 fi
 
+# 19b. Brownian coagulation (transition regime) of 10 nm spheres in air at 1500 K, 1 bar,
+#      masses in monomers of 9.42e-22 kg: runs with coagulation events and closed balances
+if want brownian; then
+    c=$(copyCase brownian)
+    setEntry "$c" constant/coagulationProperties kernel "{ type Brownian; T 1500; p 1e5; }"
+    foamDictionary "$c/constant/coagulationProperties" -entry particles \
+        -add "{ density 1800; massUnit 9.42e-22; }" > /dev/null
+    # 1e10 times the duct's inception and weight: the same computational particles, number
+    # densities near 1e16 per m3 that coagulate within the run
+    setEntry "$c" constant/coagulationProperties inception/rate 3e18
+    setEntry "$c" constant/coagulationProperties statisticalWeight/V1/SWA 1.25e-18
+    expectRun "$c"
+    grep -q "regime transition, particle density 1800" "$c/log" || fail "brownian: no kernel line"
+    awk '/coagulation events/ { n = $4 } END { exit !(n > 0) }' "$c/log" \
+        || fail "brownian: no coagulation event"
+fi
+
 # 20. Dictionary variables: an entry that the file references with $ is a variable, not a typo
 if want variables; then
     c=$(copyCase variables)

@@ -199,6 +199,25 @@ TEST(BrownianKernel, SamplerSumsTheMajorantOverAPopulation)
     }
 }
 
+//- Masses in another unit (massUnit kg each): the same kernel and majorant at the same
+//  physical masses
+TEST(BrownianKernel, MassUnit)
+{
+    const ParticleMaterial kg{1800.0};
+    const double m0 = kg.mass(10e-9);
+    const ParticleMaterial monomers{1800.0, m0};
+    EXPECT_NEAR(monomers.diameter(1.0), 10e-9, 1e-20);
+    for (BrownianRegime r : allRegimes) {
+        const BrownianKernel a(r, air(1200.0, 1e5), kg), b(r, air(1200.0, 1e5), monomers);
+        for (double x : {1.0, 3.0, 1000.0}) {
+            const ParticleType one{1.0}, other{x}, oneKg{m0}, otherKg{x * m0};
+            EXPECT_NEAR(b(one, other) / a(oneKg, otherKg), 1.0, 1e-12) << brownianRegimeName(r);
+            EXPECT_NEAR(b.majorant(one, other) / a.majorant(oneKg, otherKg), 1.0, 1e-12)
+                << brownianRegimeName(r);
+        }
+    }
+}
+
 TEST(BrownianKernel, RegimeNames)
 {
     for (BrownianRegime r : allRegimes) EXPECT_EQ(parseBrownianRegime(brownianRegimeName(r)), r);

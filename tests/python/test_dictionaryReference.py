@@ -80,6 +80,10 @@ SECTIONS = {
         [("kernel", "localSaffmanTurner")],
     (MODELS + "submodels/coagulationKernels/noCoagulation/noCoagulation.C", "noCoagulation", 0):
         [("kernel", "none")],
+    (MODELS + "submodels/coagulationKernels/Brownian/Brownian.C", "readRegime", 0):
+        [("kernel", "Brownian")],
+    (MODELS + "clouds/particleMaterial/particleMaterial.C", "readParticleMaterial", 0):
+        [("particles", None)],
     (MODELS + "submodels/inceptionModels/uniformInception/uniformInception.C", "uniform", 0):
         [("inception", "uniform")],
     (MODELS + "submodels/inceptionModels/cellZoneInception/cellZoneInception.C", "cellZone", 0):

@@ -43,16 +43,17 @@ double sutherlandViscosity(double T, double As, double Ts)
 void ParticleMaterial::check() const
 {
     requirePositive("coag::ParticleMaterial", "the density [kg/m3]", density);
+    requirePositive("coag::ParticleMaterial", "the mass unit [kg]", massUnit);
 }
 
 double ParticleMaterial::diameter(double mass) const
 {
-    return std::cbrt(6.0 * mass / (constants::pi * density));
+    return std::cbrt(6.0 * mass * massUnit / (constants::pi * density));
 }
 
 double ParticleMaterial::mass(double diameter) const
 {
-    return density * constants::pi * diameter * diameter * diameter / 6.0;
+    return density * constants::pi * diameter * diameter * diameter / 6.0 / massUnit;
 }
 
 double SlipCorrection::operator()(double Kn) const

@@ -55,7 +55,7 @@ BrownianKernel::BrownianKernel(BrownianRegime regime, const GasState& gas,
         {cc * b, minusThird, one},        {cc * b, one, minusThird},
         {cc * b, minusTwoThirds, third},  {cc * b, third, minusTwoThirds}};
     // cfm (xi + xj)^2 (mi^(-1/2) + mj^(-1/2)), cfm = (pi/4) a^2 sqrt(8kT/pi)
-    const double cf = 0.25 * pi * a_ * a_ * std::sqrt(8.0 * kT_ / pi);
+    const double cf = 0.25 * pi * a_ * a_ * std::sqrt(8.0 * kT_ / (pi * material_.massUnit));
     const std::vector<MajorantTerm> freeMolecularTerms{
         {cf, sixth, one},                 {cf, one, sixth},
         {cf, twoThirds, minusHalf},       {cf, minusHalf, twoThirds},
@@ -81,7 +81,7 @@ BrownianKernel::Single BrownianKernel::single(double mass) const
     using namespace constants;
     Single s;
     s.d = a_ * std::cbrt(mass);
-    s.c = std::sqrt(8.0 * kT_ / (pi * mass));
+    s.c = std::sqrt(8.0 * kT_ / (pi * mass * material_.massUnit));
     s.C = slip_(2.0 * lambda_ / s.d);
     s.D = stokesEinsteinDiffusivity(kT_, s.C, gas_.mu, s.d);
     return s;

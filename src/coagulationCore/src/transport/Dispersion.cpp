@@ -8,7 +8,7 @@ namespace coag {
 
 double sphereDiameter(double mass, const BrownianGas& gas)
 {
-    return ParticleMaterial{gas.density}.diameter(mass * gas.massUnit);
+    return ParticleMaterial{gas.density, gas.massUnit}.diameter(mass);
 }
 
 double slipCorrection(double diameter, const BrownianGas& gas)

@@ -7,6 +7,7 @@
 
 #include "coagulationCloud.H"
 #include "caseChecks.H"
+#include "particleMaterial.H"
 #include "restartPrecision.H"
 
 #include <cstdlib>
@@ -112,10 +113,16 @@ Foam::coagulation::coagulationCloud::coagulationCloud
             "algorithm", "kernel", "inception", "inflow", "transport",
             "statisticalWeight", "seed", "sampling", "numberControl",
             "splitting", "patchInteraction", "dispersion",
-            "initialPopulation", "cloudFunctions"
+            "initialPopulation", "cloudFunctions", "particles"
         }
     );
     caseChecks::cellVolumes(mesh_);
+
+    // The particles' material, checked whether or not a model reads it
+    if (properties_.found("particles"))
+    {
+        readParticleMaterial(properties_, "cloud " + cloudName);
+    }
 
     const word scheme =
         properties_.getOrDefault<word>

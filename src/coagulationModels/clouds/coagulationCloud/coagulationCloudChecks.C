@@ -322,32 +322,23 @@ Foam::word Foam::coagulation::coagulationCloud::latestCompleteTime() const
 
 void Foam::coagulation::coagulationCloud::checkParticleFiles() const
 {
-    // The completion marker holds the particle count of its time: every
-    // particle file must have that many, or it is of another time (a copy,
-    // a write cut short), and reading it would mix particles
+    // Every particle field of a processor holds as many particles as its
+    // coordinates, and all processors together as many as the completion
+    // marker records for the time (the whole case's count, so that a time
+    // decomposed or reconstructed since checks too); otherwise a file is of
+    // another time (a copy, a write cut short), and reading it would mix
+    // particles
     const Time& runTime = mesh_.time();
-    const fileName marker(runTime.timePath()/"uniform"/completeMarker);
-    label expected = -1;
-    if (isFile(marker))
-    {
-        IFstream is(marker);
-        dictionary(is).readIfPresent("particles", expected);
-    }
-    if (expected < 0)
-    {
-        return;
-    }
-
     const fileName dir(runTime.timePath()/cloud::prefix/this->name());
+    const fileName coordinates
+    (
+        dir/(isFile(dir/"coordinates") ? "coordinates" : "positions")
+    );
+
     fileName file;
     label found = -1;
-    if (this->size() != expected)
-    {
-        // The cloud's constructor read the particles' places
-        file = dir/(isFile(dir/"coordinates") ? "coordinates" : "positions");
-        found = this->size();
-    }
-    else if (expected > 0)
+    label expected = this->size();
+    if (expected > 0)
     {
         for (const word field : {"mass", "weight"})
         {
@@ -362,45 +353,75 @@ void Foam::coagulation::coagulationCloud::checkParticleFiles() const
                 field, runTime.timeName(), mesh_,
                 IOobject::NO_READ, IOobject::NO_WRITE, false
             );
-            if (!io.readHeader(is) || readLabel(is) != expected)
+            io.readHeader(is);
+            const label n = readLabel(is);
+            if (n != expected)
             {
                 file = dir/field;
-                IFstream again(dir/field);
-                io.readHeader(again);
-                found = readLabel(again);
+                found = n;
                 break;
             }
         }
     }
 
+    const fileName marker(runTime.timePath()/"uniform"/completeMarker);
+    label total = -1;
+    if (isFile(marker))
+    {
+        IFstream is(marker);
+        dictionary(is).readIfPresent("totalParticles", total);
+    }
+    const label read = returnReduce(this->size(), sumOp<label>());
+    const bool totalWrong = total >= 0 && read != total;
+
     // The time to restart from, agreed by every processor
-    bool bad = !file.empty();
+    bool bad = !file.empty() || totalWrong;
     reduce(bad, orOp<bool>());
     if (!bad)
     {
         return;
     }
     const word previous(latestCompleteTime());
-    if (file.empty())
+
+    OStringStream what;
+    if (totalWrong)
+    {
+        // The same on every processor: the master's message
+        if (!Pstream::master())
+        {
+            returnReduce(label(0), sumOp<label>());
+        }
+        file =
+            Pstream::parRun()
+          ? fileName
+            (
+                runTime.globalPath()/"processor*"/runTime.timeName()
+               /cloud::prefix/this->name()/coordinates.name()
+            )
+          : coordinates;
+        what<< " hold " << read << " particles in all";
+        expected = total;
+    }
+    else if (file.empty())
     {
         // Another processor's error ends this process too
         returnReduce(label(0), sumOp<label>());
     }
-
-    OStringStream what;
-    if (found < 0)
+    else if (found < 0)
     {
-        what << " is missing";
+        what<< " is missing";
     }
     else
     {
-        what << " holds " << found << " particles";
+        what<< " holds " << found << " particles";
     }
+
     FatalErrorInFunction
         << "The particle file " << file << what.str().c_str() << ", but time "
-        << runTime.timeName() << " has " << expected << " (its uniform/"
-        << completeMarker << "): the file is of another time, or was cut"
-        << " short." << nl
+        << runTime.timeName() << " has " << expected
+        << (totalWrong ? " (its uniform/" : " (its ")
+        << (totalWrong ? word(completeMarker) : coordinates.name())
+        << "): the file is of another time, or was cut short." << nl
         << "    Put back the file written with time " << runTime.timeName()
         << ", or restart from the latest complete time, " << previous
         << " ('startFrom startTime; startTime " << previous << ";' in "
@@ -538,7 +559,9 @@ void Foam::coagulation::coagulationCloud::completeWrite()
         ),
         meshSignature(mesh_)
     );
-    marker.add("particles", this->size());
+    // The whole case's count: a time decomposed or reconstructed since
+    // holds the same number
+    marker.add("totalParticles", returnReduce(this->size(), sumOp<label>()));
     marker.add("algorithm", algorithmName_);
     // All digits: the volume is compared at a restart
     const restartPrecision allDigits;

@@ -39,17 +39,18 @@ struct GasState {
 //  mu = As sqrt(T) / (1 + Ts/T); air: As = 1.458e-6 Pa s K^-1/2, Ts = 110.4 K.
 double sutherlandViscosity(double T, double As = 1.458e-6, double Ts = 110.4);
 
-//- The particles' material: a particle of mass m [kg] is a sphere of the material's density
-//  rho [kg/m3] (its volume-equivalent diameter).
+//- The particles' material: a particle of mass m (in units of massUnit kg) is a sphere of
+//  the material's density rho [kg/m3] (its volume-equivalent diameter).
 struct ParticleMaterial {
     double density = 1000.0;
+    double massUnit = 1.0;  //!< kg per unit of the particles' masses (1: masses in kg)
 
     void check() const;
 
-    //- d = (6 m / (pi rho))^(1/3) [m]
+    //- d = (6 m massUnit / (pi rho))^(1/3) [m]
     double diameter(double mass) const;
 
-    //- m = rho pi d^3 / 6 [kg]
+    //- m = rho pi d^3 / 6 / massUnit
     double mass(double diameter) const;
 };
 

@@ -19,7 +19,8 @@ enum class BrownianRegime { freeMolecular, continuum, transition };
 std::string brownianRegimeName(BrownianRegime regime);
 BrownianRegime parseBrownianRegime(const std::string& name);
 
-//- Brownian coagulation of spheres of one material in a gas (masses in kg, K in m3/s).
+//- Brownian coagulation of spheres of one material in a gas (masses in the material's
+//  massUnit, kg by default; K in m3/s).
 //  With d the diameter, c = sqrt(8kT/(pi m)) the mean thermal speed, C the Cunningham
 //  factor and D = kTC/(3 pi mu d) the diffusivity of each particle (i, j):
 //    freeMolecular  K = (pi/4) (di + dj)^2 sqrt(ci^2 + cj^2)        (kinetic theory)
@@ -33,7 +34,7 @@ BrownianRegime parseBrownianRegime(const std::string& name);
 //  Atmospheric Modeling, 2nd ed., eq. 15.33). The transition kernel tends to the
 //  free-molecular one as Kn -> infinity and to the slip-corrected continuum one as Kn -> 0.
 //
-//  Product-sum majorants in the mass m (d = a m^(1/3), a = (6/(pi rho))^(1/3)):
+//  Product-sum majorants in the mass m (d = a m^(1/3), a = (6 massUnit/(pi rho))^(1/3)):
 //    freeMolecular  sqrt(1/mi + 1/mj) <= mi^(-1/2) + mj^(-1/2), so
 //                   Khat = cfm (xi + xj)^2 (mi^(-1/2) + mj^(-1/2)), x = m^(1/3), six terms;
 //                   Khat / K <= sqrt(2), equal at very unequal masses.

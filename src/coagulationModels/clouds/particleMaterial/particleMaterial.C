@@ -1,0 +1,38 @@
+/*---------------------------------------------------------------------------*\
+  coagulationFoam: weighted stochastic particles coupled to OpenFOAM
+  Copyright (C) 2025-2026 the coagulationFoam authors
+  SPDX-License-Identifier: GPL-3.0-or-later (see COPYING); links OpenFOAM,
+  which is GPL-3.0-or-later too
+\*---------------------------------------------------------------------------*/
+
+#include "particleMaterial.H"
+#include "caseChecks.H"
+
+// * * * * * * * * * * * * * * * * Functions * * * * * * * * * * * * * * * //
+
+coag::ParticleMaterial Foam::coagulation::readParticleMaterial
+(
+    const dictionary& properties,
+    const string& model
+)
+{
+    if (!properties.isDict("particles"))
+    {
+        FatalIOErrorInFunction(properties)
+            << "The " << model.c_str() << " needs the particles' material:"
+            << " entry 'particles { density <kg/m3>; }' in "
+            << properties.name() << nl << exit(FatalIOError);
+    }
+    const dictionary& dict = properties.subDict("particles");
+    caseChecks::keywords(dict, {"density", "massUnit"});
+    coag::ParticleMaterial material;
+    material.density = caseChecks::positive(dict, "density");
+    if (dict.found("massUnit"))
+    {
+        material.massUnit = caseChecks::positive(dict, "massUnit");
+    }
+    return material;
+}
+
+
+// ************************************************************************* //
