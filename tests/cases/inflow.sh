@@ -51,12 +51,12 @@ awk -F, -v c=$cIn -v n="$(awk -v c=$cIn -v s="$scale" -v h="$h" -v L="$L" -v W="
 # point on the face plus the distance it travelled since crossing it, uniform over the step;
 # started on the face instead, the particles of a step travel together and sit on a lattice
 # 1.25 mm apart, 3 or 4 points in a 4 mm cell, and M1 in the cells alternates by about 25 %.
-# No coagulation (K0 1e-30, mass 1): M1 = M0 = c_in in every cell, within 4 % (a cell holds
+# No coagulation (kernel none, mass 1): M1 = M0 = c_in in every cell, within 4 % (a cell holds
 # about 256 particles, ~75 independent ones over the window: about 0.7 %).
 coarse=$(newCase constantKernelDuct inflow_coarseStep)
 cd "$coarse"
 setEntry . constant/coagulationProperties inception/rate 0
-setEntry . constant/coagulationProperties kernel/K0 1e-30
+setEntry . constant/coagulationProperties kernel "{ type none; }"
 setEntry . constant/coagulationProperties inflow/density $cIn
 setEntry . constant/coagulationProperties statisticalWeight/n 2048
 setEntry . constant/coagulationProperties sampling/tRelax 0.3
