@@ -13,7 +13,8 @@
 // shows the fastest block (least disturbed by other load on the machine) and the median.
 //
 // Usage: coagulationBenchmark [minEventsPerCase (default 3e6)] [maxN (default 1e6)] [repeats (default 3)]
-//                             [algorithm (SWA, DSA1 or all)] [kernel (additive, constant or all)]
+//                             [algorithm (SWA, DSA1 or all)] [kernel (additive, constant or all;
+//                              or brownianFreeMolecular, brownianContinuum, brownianTransition)]
 //                             [sizes: N,N,... (default 1e3,1e4,1e5,1e6), those up to maxN]
 // COAGULATION_LOOKAHEAD=0 in the environment switches the event loop's draws made ahead off
 // (DrawsAhead::never; the same events, so a same-binary comparison of their cost).
@@ -22,6 +23,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <memory>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -40,6 +42,31 @@ CellPopulation fill(std::size_t N)
     return pop;
 }
 
+const std::vector<std::string> brownianKernels{"brownianFreeMolecular", "brownianContinuum",
+                                               "brownianTransition"};
+
+//- The kernel of the name: the core's kernels with K0 = 1, or the Brownian ones of 10 nm
+//  monomers (1800 kg/m3, masses in monomers) in air at 1500 K and 1 bar; k11 = K(1, 1), so that
+//  the windows, in units of 1/(K11 n), take about as many events as the constant kernel's
+std::unique_ptr<CoagulationKernel> benchmarkKernel(const std::string& name, double& k11)
+{
+    k11 = 1.0;
+    const auto b = std::find(brownianKernels.begin(), brownianKernels.end(), name);
+    if (b == brownianKernels.end()) return makeKernel(name, 1.0);
+    GasState gas;
+    gas.T = 1500.0;
+    gas.p = 1e5;
+    gas.mu = sutherlandViscosity(gas.T);
+    ParticleMaterial material{1800.0};
+    material.massUnit = material.mass(10e-9);
+    const BrownianRegime regime = b == brownianKernels.begin() ? BrownianRegime::freeMolecular
+                                  : b == brownianKernels.begin() + 1 ? BrownianRegime::continuum
+                                                                     : BrownianRegime::transition;
+    auto kernel = std::make_unique<BrownianKernel>(regime, gas, material);
+    k11 = (*kernel)(ParticleType{1.0}, ParticleType{1.0});
+    return kernel;
+}
+
 struct Result {
     double events = 0;
     double accepted = 0;
@@ -51,7 +78,8 @@ struct Result {
 Result runBlock(const std::string& algName, const std::string& kernelName, std::size_t N,
            double minEvents)
 {
-    auto kernel = makeKernel(kernelName, 1.0);
+    double k11 = 1.0;
+    auto kernel = benchmarkKernel(kernelName, k11);
     const char* lookahead = std::getenv("COAGULATION_LOOKAHEAD");
     auto alg = detail::makeCellAlgorithm(algName, *kernel, InceptionModel{}, NumberControl{},
                                          lookahead && std::string(lookahead) == "0"
@@ -59,8 +87,8 @@ Result runBlock(const std::string& algName, const std::string& kernelName, std::
                                              : DrawsAhead::whereTheyPay);
     const bool dsa = algName != "SWA";
     // physical time per window (K0 = 1, density 1)
-    const double window = dsa ? (kernelName == "additive" ? 0.2 : 0.5)
-                              : (kernelName == "additive" ? 0.5 : 1.0);
+    const double window = (dsa ? (kernelName == "additive" ? 0.2 : 0.5)
+                               : (kernelName == "additive" ? 0.5 : 1.0)) / k11;
     Rng rng(12345);
     StepStatistics stats;
     Result r;
@@ -164,7 +192,8 @@ int main(int argc, char** argv)
     }
     for (const auto& [given, allowed] :
          {std::pair<std::string, std::vector<std::string>>{onlyAlg, {"SWA", "DSA1", "all"}},
-          {onlyKernel, {"additive", "constant", "all"}}}) {
+          {onlyKernel, {"additive", "constant", "all", brownianKernels[0], brownianKernels[1],
+                        brownianKernels[2]}}}) {
         if (std::find(allowed.begin(), allowed.end(), given) == allowed.end()) {
             std::fprintf(stderr, "coagulationBenchmark: unknown algorithm or kernel '%s'\n",
                          given.c_str());
@@ -180,8 +209,9 @@ int main(int argc, char** argv)
                 "Mevents/s", "(median)", "ns/event", "Macc/s", "ns/acc", "bytes/ptcl", "fict.");
     for (const std::string alg : {"SWA", "DSA1"}) {
         if (onlyAlg != "all" && alg != onlyAlg) continue;
-        for (const std::string kernel : {"additive", "constant"}) {
-            if (onlyKernel != "all" && kernel != onlyKernel) continue;
+        std::vector<std::string> kernels{"additive", "constant"};
+        if (onlyKernel != "all") kernels = {onlyKernel};
+        for (const std::string& kernel : kernels) {
             for (double N : sizes) {
                 if (N > maxN) continue;
                 const Summary r =
