@@ -296,6 +296,13 @@ if want algorithmChange; then
     setEntry "$c" system/controlDict endTime 0.015
     setEntry "$c" constant/coagulationProperties algorithm DSA1
     expectError "$c" "algorithm" "SWA" "DSA1" "restart"
+    # the same algorithm with another weight: the message names statisticalWeight
+    c=$(copyCase algorithmChangeWeight)
+    setEntry "$c" constant/coagulationProperties algorithm DSA1
+    expectRun "$c"
+    setEntry "$c" system/controlDict endTime 0.015
+    setEntry "$c" constant/coagulationProperties statisticalWeight/n 512
+    expectError "$c" "algorithm DSA1 with other weights" "statisticalWeight"
 fi
 
 # 14. A cell of zero volume, or an inverted one: refused at the start, pointing at checkMesh

@@ -107,7 +107,8 @@ double BrownianKernel::transition(const ParticleType& a, const ParticleType& b) 
     auto g = [](const Single& s) {
         const double l = 8.0 * s.D / (pi * s.c);
         const double dl = s.d + l;
-        return (dl * dl * dl - std::pow(s.d * s.d + l * l, 1.5)) / (3.0 * s.d * l) - s.d;
+        const double q = s.d * s.d + l * l;
+        return (dl * dl * dl - q * std::sqrt(q)) / (3.0 * s.d * l) - s.d;
     };
     const double gi = g(i), gj = g(j);
     const double d = i.d + j.d, D = i.D + j.D;

@@ -49,6 +49,27 @@ Foam::dictionary meshSignature(const Foam::fvMesh& mesh)
     return dict;
 }
 
+//- The completion marker of the start time, or an empty dictionary
+Foam::dictionary startMarker(const Foam::Time& runTime)
+{
+    const Foam::fileName file(runTime.timePath()/"uniform"/completeMarker);
+    if (!Foam::isFile(file))
+    {
+        return Foam::dictionary();
+    }
+    Foam::IFstream is(file);
+    return Foam::dictionary(is);
+}
+
+
+//- On a processor without an error of its own while another has one: wait
+//  in a collective that the erring processor never joins; its FatalError
+//  (MPI_Abort) ends this process too, so the error is said once
+void awaitFatalErrorElsewhere()
+{
+    Foam::returnReduce(Foam::label(0), Foam::sumOp<Foam::label>());
+}
+
 } // End anonymous namespace
 
 
@@ -230,8 +251,7 @@ void Foam::coagulation::coagulationCloud::checkStartTime() const
         // One message, the master's, naming the processors
         if (!Pstream::master())
         {
-            // The master's error ends this process too
-            returnReduce(label(0), sumOp<label>());
+            awaitFatalErrorElsewhere();
         }
         OStringStream where;
         if (Pstream::parRun())
@@ -266,10 +286,9 @@ void Foam::coagulation::coagulationCloud::checkStartTime() const
     // Particles from another mesh would sit in the wrong cells
     const fileName marker(uniform/completeMarker);
     const dictionary current(meshSignature(mesh_));  // on every processor
-    if (isFile(marker))
+    const dictionary written(startMarker(runTime));
+    if (!written.empty())
     {
-        IFstream is(marker);
-        const dictionary written(is);
         for (const word key : {"nCells"})
         {
             if (written.get<label>(key) != current.get<label>(key))
@@ -364,13 +383,8 @@ void Foam::coagulation::coagulationCloud::checkParticleFiles() const
         }
     }
 
-    const fileName marker(runTime.timePath()/"uniform"/completeMarker);
     label total = -1;
-    if (isFile(marker))
-    {
-        IFstream is(marker);
-        dictionary(is).readIfPresent("totalParticles", total);
-    }
+    startMarker(runTime).readIfPresent("totalParticles", total);
     const label read = returnReduce(this->size(), sumOp<label>());
     const bool totalWrong = total >= 0 && read != total;
 
@@ -389,7 +403,7 @@ void Foam::coagulation::coagulationCloud::checkParticleFiles() const
         // The same on every processor: the master's message
         if (!Pstream::master())
         {
-            returnReduce(label(0), sumOp<label>());
+            awaitFatalErrorElsewhere();
         }
         file =
             Pstream::parRun()
@@ -404,8 +418,7 @@ void Foam::coagulation::coagulationCloud::checkParticleFiles() const
     }
     else if (file.empty())
     {
-        // Another processor's error ends this process too
-        returnReduce(label(0), sumOp<label>());
+        awaitFatalErrorElsewhere();
     }
     else if (found < 0)
     {
@@ -487,15 +500,18 @@ void Foam::coagulation::coagulationCloud::checkParticles() const
         reduce(wMax, maxOp<scalar>());
         if (wMax > -GREAT && (wMin != W || wMax != W))
         {
-            const fileName marker
-            (
-                mesh_.time().timePath()/"uniform"/completeMarker
-            );
             word writtenBy("unknown");
-            if (isFile(marker))
+            startMarker(mesh_.time()).readIfPresent("algorithm", writtenBy);
+            // The same algorithm: the weight W changed (statisticalWeight)
+            OStringStream keep;
+            if (writtenBy == algorithmName_)
             {
-                IFstream is(marker);
-                dictionary(is).readIfPresent("algorithm", writtenBy);
+                keep<< "Keep the entries of 'statisticalWeight' of the run"
+                    << " that wrote this time";
+            }
+            else
+            {
+                keep<< "Keep 'algorithm " << writtenBy << ";'";
             }
             FatalIOErrorInFunction(properties_)
                 << "Entry 'algorithm' = " << algorithmName_ << " in "
@@ -504,10 +520,10 @@ void Foam::coagulation::coagulationCloud::checkParticles() const
                 << " start time " << mesh_.time().timeName() << " ("
                 << dir/"weight" << ") have weights from " << wMin << " to "
                 << wMax << ": this restart continues a run of algorithm "
-                << writtenBy << "." << nl
-                << "    Keep 'algorithm " << writtenBy << ";' to go on from"
-                << " this time, or start afresh (remove the times after 0,"
-                << " or set 'startFrom startTime; startTime 0;' in "
+                << writtenBy << " with other weights." << nl
+                << "    " << keep.str().c_str() << " to go on from this"
+                << " time, or start afresh (remove the times after 0, or set"
+                << " 'startFrom startTime; startTime 0;' in "
                 << mesh_.time().globalPath()/"system"/"controlDict" << ")"
                 << nl << exit(FatalIOError);
         }

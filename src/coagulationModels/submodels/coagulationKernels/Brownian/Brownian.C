@@ -109,12 +109,13 @@ Foam::coagulation::coagulationKernels::Brownian::Brownian
         )
     ),
     T_(),
-    p_(),
-    cellKernels_()
+    p_()
 {
-    const coag::BrownianRegime regime = readRegime(dict);
-    const coag::ParticleMaterial material =
-        readParticleMaterial(dict.parent(), modelName);
+    // The regime and material read for the base's kernel
+    const coag::BrownianKernel& layout =
+        static_cast<const coag::BrownianKernel&>(core());
+    const coag::BrownianRegime regime = layout.regime();
+    const coag::ParticleMaterial& material = layout.material();
 
     const scalarField T(cellValues(dict, "T", dimTemperature, mesh, T_));
     const scalarField p(cellValues(dict, "p", dimPressure, mesh, p_));
@@ -140,14 +141,14 @@ Foam::coagulation::coagulationKernels::Brownian::Brownian
         gas.molarMass = caseChecks::positive(dict, "molarMass");
     }
 
-    cellKernels_.reserve(T.size());
+    cellKernels().reserve(T.size());
     scalar lowest = GREAT, highest = 0;
     forAll(T, celli)
     {
         gas.T = T[celli];
         gas.p = p[celli];
         gas.mu = sutherland ? coag::sutherlandViscosity(gas.T, As, Ts) : mu;
-        cellKernels_.push_back
+        cellKernels().push_back
         (
             std::make_unique<coag::BrownianKernel>(regime, gas, material)
         );

@@ -30,7 +30,8 @@ Foam::coagulation::coagulationKernel::coagulationKernel
 )
 :
     K0_(0),
-    core_()
+    core_(),
+    cellKernels_()
 {
     caseChecks::keywords(dict, {"type", "K0"});
     K0_ = dict.get<scalar>("K0");
@@ -54,7 +55,8 @@ Foam::coagulation::coagulationKernel::coagulationKernel
 )
 :
     K0_(K0),
-    core_(std::move(core))
+    core_(std::move(core)),
+    cellKernels_()
 {}
 
 

@@ -145,8 +145,7 @@ Foam::coagulation::coagulationKernels::localSaffmanTurner::localSaffmanTurner
             true
         )
     ),
-    nu_(),
-    cellKernels_()
+    nu_()
 {
     // 'nu': a field's name, or a value (with or without dimensions)
     scalar nu = 0;
@@ -172,7 +171,7 @@ Foam::coagulation::coagulationKernels::localSaffmanTurner::localSaffmanTurner
     }
 
     const scalarField& epsilon = epsilon_->primitiveField();
-    cellKernels_.reserve(epsilon.size());
+    cellKernels().reserve(epsilon.size());
     scalar lowest = GREAT, highest = 0;
     forAll(epsilon, celli)
     {
@@ -189,7 +188,7 @@ Foam::coagulation::coagulationKernels::localSaffmanTurner::localSaffmanTurner
         }
         lowest = min(lowest, K0c);
         highest = max(highest, K0c);
-        cellKernels_.push_back(coag::makeKernel("saffmanTurner", K0c));
+        cellKernels().push_back(coag::makeKernel("saffmanTurner", K0c));
     }
 
     Info<< "    epsilon from field " << epsilon_->name() << ": "
