@@ -91,7 +91,8 @@ KINDS = {
     "puffBrownian": dict(nx=20, ny=20, lx=1.0, ly=1.0, n=10000, zone="puff",
                  patches={"walls": ("wall", ["left", "right", "bottom", "top"]),
                           "frontAndBack": ("empty", ["frontAndBack"])},
-                 dispersion="dispersion { type Brownian; T 300; mu %.17g; lambda 1e-30; rho %.17g; }"
+                 dispersion="dispersion { type Brownian; T 300; mu %.17g; lambda 1e-30; }\n"
+                            "particles { density %.17g; }"
                             % (1.380649e-23 * 300 / (3 * np.pi * 2e-3), 6 / np.pi),
                  deltaT=0.5, endTime=10, writeInterval=5, mass=8, D=1e-3),
     "slab": dict(nx=25, ny=1, lx=1.0, ly=0.04, n=1600,

@@ -32,10 +32,10 @@ foamDictionary constant/coagulationProperties -entry cloudFunctions -set "{
         cellZones       (tail);
         bins            { type integer; K 30; }
         timeStart       0.4;
-        density         1000;
-        massUnit        1e-24;
     }
 }" > /dev/null
+foamDictionary constant/coagulationProperties -entry particles \
+    -add "{ density 1000; massUnit 1e-24; }" > /dev/null
 runApplication coagulationFoam
 checkBalance log.coagulationFoam
 grep -q "Size distribution psd: 4 region(s), 30 bins" log.coagulationFoam \

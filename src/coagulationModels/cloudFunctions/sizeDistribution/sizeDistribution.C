@@ -6,6 +6,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "sizeDistribution.H"
+#include "particleMaterial.H"
 #include "coagulationCloud.H"
 #include "addToRunTimeSelectionTable.H"
 #include "fvMesh.H"
@@ -219,12 +220,20 @@ Foam::coagulation::cloudFunctions::sizeDistribution::sizeDistribution
 {
     const Time& runTime = cloud.pMesh().time();
 
+    caseChecks::movedEntries
+    (
+        dict,
+        {
+            {"density", "the particles' material, 'particles { density ...; }',"},
+            {"massUnit", "the particles' material, 'particles { massUnit ...; }',"}
+        }
+    );
     caseChecks::keywords
     (
         dict,
         {
             "type", "probes", "cellZones", "bins", "timeStart",
-            "sampleInterval", "correlationTime", "density", "massUnit"
+            "sampleInterval", "correlationTime"
         }
     );
 
@@ -253,13 +262,13 @@ Foam::coagulation::cloudFunctions::sizeDistribution::sizeDistribution
             << nl << exit(FatalIOError);
     }
     minWindow_ = label(std::ceil(Tc/sampleInterval_ - 1e-9));
-    if (dict.found("density"))
+    // Diameters from the particles' material, when the case gives one
+    if (cloud.properties().found("particles"))
     {
-        density_ = caseChecks::positive(dict, "density");
-    }
-    if (dict.found("massUnit"))
-    {
-        massUnit_ = caseChecks::positive(dict, "massUnit");
+        const coag::ParticleMaterial material =
+            readParticleMaterial(cloud.properties(), "size distribution " + name);
+        density_ = material.density;
+        massUnit_ = material.massUnit;
     }
 
     readRegions(dict);

@@ -80,6 +80,26 @@ void Foam::coagulation::caseChecks::keywords
 }
 
 
+void Foam::coagulation::caseChecks::movedEntries
+(
+    const dictionary& dict,
+    std::initializer_list<std::pair<const char*, const char*>> moved
+)
+{
+    for (const auto& m : moved)
+    {
+        if (dict.found(m.first, keyType::LITERAL))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry '" << m.first << "' in " << dict.name()
+                << " is no longer read here: give it as " << m.second
+                << " in " << dict.topDict().name() << nl
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
 Foam::scalar Foam::coagulation::caseChecks::positive
 (
     const dictionary& dict,

@@ -189,9 +189,15 @@ Foam::coagulation::coagulationCloud::coagulationCloud
     (
         properties_.subOrEmptyDict("transport"), *this
     );
+    // The dispersion dictionary itself, not a copy: a Brownian walk reads
+    // the particles' material beside it
+    const dictionary noDispersion(properties_, dictionary());
     dispersion_ = dispersionModel::New
     (
-        properties_.subOrEmptyDict("dispersion"), mesh_
+        properties_.isDict("dispersion")
+      ? properties_.subDict("dispersion")
+      : noDispersion,
+        mesh_
     );
     if (properties_.found("inflow"))
     {

@@ -6,6 +6,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "dispersionModel.H"
+#include "particleMaterial.H"
 #include "coagulationParticle.H"
 #include "caseChecks.H"
 
@@ -175,7 +176,15 @@ coag::BrownianGas Foam::coagulation::dispersionModel::readBrownianGas
     const wordList& otherKeys
 )
 {
-    wordList valid{"T", "mu", "lambda", "rho", "massUnit", "A1", "A2", "A3"};
+    caseChecks::movedEntries
+    (
+        dict,
+        {
+            {"rho", "the particles' material, 'particles { density ...; }',"},
+            {"massUnit", "the particles' material, 'particles { massUnit ...; }',"}
+        }
+    );
+    wordList valid{"T", "mu", "lambda", "A1", "A2", "A3"};
     valid.append(otherKeys);
     caseChecks::keywords(dict, valid);
 
@@ -183,11 +192,12 @@ coag::BrownianGas Foam::coagulation::dispersionModel::readBrownianGas
     gas.temperature = caseChecks::positive(dict, "T");
     gas.viscosity = caseChecks::positive(dict, "mu");
     gas.meanFreePath = caseChecks::positive(dict, "lambda");
-    gas.density = caseChecks::positive(dict, "rho");
-    if (dict.found("massUnit"))
-    {
-        gas.massUnit = caseChecks::positive(dict, "massUnit");
-    }
+    // The particles' sizes from the material every model shares
+    const coag::ParticleMaterial material =
+        readParticleMaterial(dict.topDict(), "Brownian dispersion");
+
+    gas.density = material.density;
+    gas.massUnit = material.massUnit;
     if (dict.found("A1")) gas.slip.A1 = caseChecks::nonNegative(dict, "A1");
     if (dict.found("A2")) gas.slip.A2 = caseChecks::nonNegative(dict, "A2");
     if (dict.found("A3")) gas.slip.A3 = caseChecks::positive(dict, "A3");
