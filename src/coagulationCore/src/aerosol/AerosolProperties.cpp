@@ -56,11 +56,6 @@ double ParticleMaterial::mass(double diameter) const
     return density * constants::pi * diameter * diameter * diameter / 6.0 / massUnit;
 }
 
-double SlipCorrection::operator()(double Kn) const
-{
-    return 1.0 + Kn * (A1 + A2 * std::exp(-A3 / Kn));
-}
-
 double stokesEinsteinDiffusivity(double kT, double C, double mu, double d)
 {
     return kT * C / (3.0 * constants::pi * mu * d);

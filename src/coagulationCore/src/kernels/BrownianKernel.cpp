@@ -1,6 +1,7 @@
 // coagulationFoam core. Copyright (C) 2025-2026 the coagulationFoam authors
 // SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 #include "coagulation/kernels/BrownianKernel.hpp"
+#include "coagulation/kernels/CubeRoot.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -44,9 +45,14 @@ BrownianKernel::BrownianKernel(BrownianRegime regime, const GasState& gas,
     kT_ = boltzmann * gas_.T;
     lambda_ = gas_.meanFreePath();
     a_ = material_.diameter(1.0);
+    speed1_ = std::sqrt(8.0 * kT_ / (pi * material_.massUnit));
+    knudsen1_ = 2.0 * lambda_ / a_;
+    diffusivity1_ = kT_ / (3.0 * pi * gas_.mu * a_);
+    freeMolecular1_ = 0.25 * pi * a_ * a_ * speed1_;
+    continuum1_ = 2.0 * kT_ / (3.0 * gas_.mu);
 
     // (2kT/3mu)(1/di + Abar/di^2 + 1/dj + Abar/dj^2)(di + dj), d = a x, x = m^(1/3)
-    const double cc = 2.0 * kT_ / (3.0 * gas_.mu);
+    const double cc = continuum1_;
     // C <= slip.bound(Kn) = 1 + (A1 + A2) 2 lambda / d
     const double b = 2.0 * lambda_ * (slip_.A1 + slip_.A2) / a_;
     const std::vector<MajorantTerm> continuumTerms{
@@ -55,7 +61,7 @@ BrownianKernel::BrownianKernel(BrownianRegime regime, const GasState& gas,
         {cc * b, minusThird, one},        {cc * b, one, minusThird},
         {cc * b, minusTwoThirds, third},  {cc * b, third, minusTwoThirds}};
     // cfm (xi + xj)^2 (mi^(-1/2) + mj^(-1/2)), cfm = (pi/4) a^2 sqrt(8kT/pi)
-    const double cf = 0.25 * pi * a_ * a_ * std::sqrt(8.0 * kT_ / (pi * material_.massUnit));
+    const double cf = freeMolecular1_;
     const std::vector<MajorantTerm> freeMolecularTerms{
         {cf, sixth, one},                 {cf, one, sixth},
         {cf, twoThirds, minusHalf},       {cf, minusHalf, twoThirds},
@@ -78,26 +84,30 @@ BrownianKernel::BrownianKernel(BrownianRegime regime, const GasState& gas,
 
 BrownianKernel::Single BrownianKernel::single(double mass) const
 {
-    using namespace constants;
     Single s;
-    s.d = a_ * std::cbrt(mass);
-    s.c = std::sqrt(8.0 * kT_ / (pi * mass * material_.massUnit));
-    s.C = slip_(2.0 * lambda_ / s.d);
-    s.D = stokesEinsteinDiffusivity(kT_, s.C, gas_.mu, s.d);
+    const double x = cubeRoot(mass);
+    s.d = a_ * x;
+    s.c = speed1_ / std::sqrt(mass);
+    s.C = slip_(knudsen1_ / x);
+    s.D = diffusivity1_ * s.C / x;
     return s;
 }
 
+// Each regime computes only what its formula needs: the free-molecular kernel has no slip
+// correction, the continuum one no thermal speed
+
 double BrownianKernel::freeMolecular(const ParticleType& a, const ParticleType& b) const
 {
-    const Single i = single(a.mass), j = single(b.mass);
-    const double d = i.d + j.d;
-    return 0.25 * constants::pi * d * d * std::sqrt(i.c * i.c + j.c * j.c);
+    // (pi/4)(di + dj)^2 sqrt(ci^2 + cj^2) with c^2 = speed1^2 / m
+    const double x = cubeRoot(a.mass) + cubeRoot(b.mass);
+    return freeMolecular1_ * x * x * std::sqrt(1.0 / a.mass + 1.0 / b.mass);
 }
 
 double BrownianKernel::continuum(const ParticleType& a, const ParticleType& b) const
 {
-    const Single i = single(a.mass), j = single(b.mass);
-    return 2.0 * constants::pi * (i.D + j.D) * (i.d + j.d);
+    // 2 pi (Di + Dj)(di + dj) = (2kT/3mu)(Ci/xi + Cj/xj)(xi + xj)
+    const double xi = cubeRoot(a.mass), xj = cubeRoot(b.mass);
+    return continuum1_ * (slip_(knudsen1_ / xi) / xi + slip_(knudsen1_ / xj) / xj) * (xi + xj);
 }
 
 double BrownianKernel::transition(const ParticleType& a, const ParticleType& b) const
@@ -129,7 +139,7 @@ double BrownianKernel::operator()(const ParticleType& a, const ParticleType& b) 
 
 void BrownianKernel::basis(const ParticleType& z, double* phi) const
 {
-    const double x = std::cbrt(z.mass);
+    const double x = cubeRoot(z.mass);
     const double s = std::sqrt(x);
     phi[one] = 1.0;
     phi[third] = x;

@@ -8,6 +8,8 @@
 // random walk are made of (Seinfeld & Pandis, Atmospheric Chemistry and Physics, chapter 9;
 // Hinds, Aerosol Technology, chapters 3 and 7).
 
+#include <cmath>
+
 namespace coag {
 
 namespace constants {
@@ -64,7 +66,7 @@ struct SlipCorrection {
     double A2 = 0.400;
     double A3 = 1.10;
 
-    double operator()(double Kn) const;
+    double operator()(double Kn) const { return 1.0 + Kn * (A1 + A2 * std::exp(-A3 / Kn)); }
     double bound(double Kn) const { return 1.0 + (A1 + A2) * Kn; }
 };
 

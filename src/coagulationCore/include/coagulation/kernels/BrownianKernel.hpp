@@ -87,6 +87,9 @@ private:
     double kT_;
     double lambda_;
     double a_;       //!< d = a m^(1/3)
+    // The single-particle quantities at unit mass: c = speed1 m^(-1/2), Kn = knudsen1 m^(-1/3),
+    // D = diffusivity1 C m^(-1/3); the kernels' factors (pi/4) a^2 speed1 and 2kT/(3 mu)
+    double speed1_, knudsen1_, diffusivity1_, freeMolecular1_, continuum1_;
     std::vector<MajorantTerm> terms_;
 };
 
