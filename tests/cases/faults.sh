@@ -377,7 +377,7 @@ if want noKernel; then
     c=$(copyCase noKernel)
     setEntry "$c" constant/coagulationProperties kernel "{ type none; }"
     expectRun "$c"
-    grep -q "coagulation events *= 0 (fictitious 0)" "$c/log" || fail "noKernel: coagulation events"
+    grep -q "coagulation events *= 0 (fictitious 0, 0 per real one)" "$c/log" || fail "noKernel: coagulation events"
     grep -q "particles in/incepted/out  = 0 / [1-9]" "$c/log" || fail "noKernel: no inception"
 fi
 
@@ -396,6 +396,21 @@ if want brownian; then
     grep -q "regime transition, particle density 1800" "$c/log" || fail "brownian: no kernel line"
     awk '/coagulation events/ { n = $4 } END { exit !(n > 0) }' "$c/log" \
         || fail "brownian: no coagulation event"
+    # The fictitious jumps per real one, in the log and in the sample file's attributes, the
+    # same counts; the transition majorant makes at most one per real one
+    "$COAGULATIONFOAM_PYTHON" - "$c" <<'PY' || fail "brownian: fictitious jumps in the log and the sample file"
+import glob, re, sys
+import h5py
+case = sys.argv[1]
+last = re.findall(r"coagulation events *= (\S+) \(fictitious (\S+), (\S+) per real one\)",
+                  open(case + "/log").read())[-1]
+real, fict, ratio = (float(v) for v in last)
+with h5py.File(glob.glob(case + "/postProcessing/coagulationSamples/samples_0.h5")[0]) as f:
+    a = f.attrs
+    assert a["coagulations"] == real and a["fictitious"] == fict, (dict(a), last)
+assert real > 0 and abs(ratio - fict / real) <= 1e-5 * ratio + 1e-12 and ratio <= 1.0, last
+print("ok brownian: %d real jumps, %.3f fictitious per real one" % (real, ratio))
+PY
 fi
 
 # 20. Dictionary variables: an entry that the file references with $ is a variable, not a typo

@@ -68,6 +68,30 @@ TEST(MomentSeriesFile, RoundTripWithSeveralAppends)
     EXPECT_THROW(r.value(0, 0, 4), std::out_of_range);
 }
 
+// Staged attributes go to the file with the next flush of samples, the last value staged
+TEST(MomentSeriesFile, StagedAttributesWrittenWithTheSamples)
+{
+    const std::string path = tempFile("staged.h5");
+    const std::vector<std::array<double, 3>> centres{{0, 0, 0}};
+    {
+        MomentSeriesWriter w(path, centres, 1);
+        w.stageAttribute("coagulations", 10);
+        w.append(0.0, {1.0});
+        w.flush();
+        EXPECT_EQ(MomentSeriesReader(path).numberAttribute("coagulations"), 10);
+        w.stageAttribute("coagulations", 20);
+        w.stageAttribute("coagulations", 30);
+        w.stageAttribute("fictitious", 5);
+        EXPECT_FALSE(MomentSeriesReader(path).hasAttribute("fictitious"));
+        w.append(1.0, {2.0});
+        w.flush();
+    }
+    MomentSeriesReader r(path);
+    EXPECT_EQ(r.numberAttribute("coagulations"), 30);
+    EXPECT_EQ(r.numberAttribute("fictitious"), 5);
+    EXPECT_EQ(r.nSamples(), 2u);
+}
+
 TEST(MomentSeriesFile, ManyCellsAndSamplesCrossChunks)
 {
     const std::string path = tempFile("large.h5");

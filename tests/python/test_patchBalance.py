@@ -14,7 +14,7 @@ BLOCK = """Time = {t}  particles = 10
 Coagulation cloud:
     particles in domain        = 10
     physical particles         = 0.8
-    coagulation events         = 0 (fictitious 0)
+    coagulation events         = 0 (fictitious 0, 0 per real one)
     particles in/incepted/out  = 0 / {inc} / {out}
     mass initial + inflow + inception - outflow + control = 0 + 0 + 8.8000000000000007 - {mout} + 0
     mass in domain             = 0.8

@@ -38,6 +38,16 @@ struct MomentSeriesWriter::Impl {
     std::size_t nOnDisk = 0;
     std::vector<double> pendingTimes;
     std::vector<double> pendingValues;
+    std::map<std::string, double> pendingAttributes;
+
+    static void writeAttribute(H5::H5File& file, const std::string& name, double v)
+    {
+        H5::Group root = file.openGroup("/");
+        if (root.attrExists(name)) root.removeAttr(name);
+        H5::Attribute a =
+            root.createAttribute(name, H5::PredType::NATIVE_DOUBLE, H5::DataSpace(H5S_SCALAR));
+        a.write(H5::PredType::NATIVE_DOUBLE, &v);
+    }
 
     //- Apply change to the file in memory (HDF5's core driver), write the image to
     //  <path>.tmp with plain stdio, then rename it over the file. HDF5 does no file I/O of
@@ -163,13 +173,13 @@ int MomentSeriesWriter::nMoments() const { return impl_->nMoments; }
 
 void MomentSeriesWriter::setAttribute(const std::string& name, double v)
 {
-    impl_->modify("MomentSeriesWriter::setAttribute", [&](H5::H5File& file) {
-        H5::Group root = file.openGroup("/");
-        if (root.attrExists(name)) root.removeAttr(name);
-        H5::Attribute a =
-            root.createAttribute(name, H5::PredType::NATIVE_DOUBLE, H5::DataSpace(H5S_SCALAR));
-        a.write(H5::PredType::NATIVE_DOUBLE, &v);
-    });
+    impl_->modify("MomentSeriesWriter::setAttribute",
+                  [&](H5::H5File& file) { Impl::writeAttribute(file, name, v); });
+}
+
+void MomentSeriesWriter::stageAttribute(const std::string& name, double v)
+{
+    impl_->pendingAttributes[name] = v;
 }
 
 void MomentSeriesWriter::setAttribute(const std::string& name, const std::string& v)
@@ -229,10 +239,12 @@ void MomentSeriesWriter::flush()
                 moments.write(d.pendingValues.data(), H5::PredType::NATIVE_DOUBLE, mem, space);
             }
         }
+        for (const auto& a : d.pendingAttributes) Impl::writeAttribute(file, a.first, a.second);
     });
     d.nOnDisk += k;
     d.pendingTimes.clear();
     d.pendingValues.clear();
+    d.pendingAttributes.clear();
 }
 
 // ---------------------------------------------------------------------------- reader

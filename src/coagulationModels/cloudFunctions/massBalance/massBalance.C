@@ -259,7 +259,9 @@ void Foam::coagulation::cloudFunctions::massBalance::write()
         << "    particles in domain        = " << now.particles << nl
         << "    physical particles         = " << now.number << nl
         << "    coagulation events         = " << coagulations
-        << " (fictitious " << fictitious << ")" << nl
+        << " (fictitious " << fictitious << ", "
+        << (coagulations > 0 ? fictitious/coagulations : scalar(0))
+        << " per real one)" << nl
         << "    particles in/incepted/out  = " << inflow.particles << " / "
         << incepted.particles << " / " << outflow.particles << nl
         << "    mass initial + inflow + inception - outflow + control = "

@@ -191,6 +191,11 @@ void Foam::coagulation::cloudFunctions::momentSampler::flush()
 {
     try
     {
+        // This processor's jumps since the run started, real and fictitious
+        // (the majorant's efficiency), with the samples they led to
+        const coag::StepStatistics& events = cloud_.events();
+        writer_->stageAttribute("coagulations", double(events.coagulations));
+        writer_->stageAttribute("fictitious", double(events.fictitious));
         writer_->flush();
         lastFlushed_ = cloud_.pMesh().time().value();
     }

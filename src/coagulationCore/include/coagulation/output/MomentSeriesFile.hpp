@@ -44,6 +44,11 @@ public:
     //- Overload so that string literals do not convert to double... or bool.
     void setAttribute(const std::string& name, const char* v) { setAttribute(name, std::string(v)); }
 
+    //- A root attribute written with the next flush that writes samples (run totals that
+    //  change with every sample, without a rewrite of the file of their own); the last
+    //  value staged for a name wins.
+    void stageAttribute(const std::string& name, double v);
+
     //- Append one sample (held in memory until flush); values has nCells*nMoments
     //  entries, cell-major (values[cell*nMoments + k]); otherwise std::invalid_argument.
     void append(double time, const std::vector<double>& values);
