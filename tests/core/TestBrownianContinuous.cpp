@@ -198,7 +198,7 @@ TEST_P(BrownianSelfPreservingTest, NumberAndSpreadAgainstTheSectionalReference)
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Algorithms, BrownianSelfPreservingTest, ::testing::Values("SWA", "DSA1"),
+INSTANTIATE_TEST_SUITE_P(Algorithms, BrownianSelfPreservingTest, ::testing::Values("SWA", "DSA1", "DSA2"),
                          [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
 //- Lognormal start in the transition regime: spheres of 1000 kg/m3 in air at 298.15 K and
@@ -207,7 +207,8 @@ INSTANTIATE_TEST_SUITE_P(Algorithms, BrownianSelfPreservingTest, ::testing::Valu
 //  exactly), M2 and the number in mass bins a factor 2^(3/2) wide (a factor sqrt 2 in
 //  diameter: dN/dlog d up to the constant log10 sqrt 2) that hold more than 2 % of the
 //  number, against the sectional reference (16 sections per mass doubling, its edges the
-//  bins' edges). Initial masses drawn from the lognormal by Box-Muller.
+//  bins' edges). 2000 particles (DSA: 1000 to 4000), 48 realisations; initial masses drawn
+//  from the lognormal by Box-Muller.
 class BrownianLognormalTest : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(BrownianLognormalTest, TransitionRegimeAgainstTheSectionalReference)
@@ -234,9 +235,9 @@ TEST_P(BrownianLognormalTest, TransitionRegimeAgainstTheSectionalReference)
     EXPECT_LT(ref.lostMass(), 1e-12 * N0);
 
     NumberControl control;
-    control.maxParticles = 2000;
-    control.minParticles = 500;
-    const std::size_t N = 1000;
+    control.maxParticles = 4000;
+    control.minParticles = 1000;
+    const std::size_t N = 2000;
     const double volume = double(N) / N0;
     auto initial = [&](Rng& rng) {
         CellPopulation pop = monodisperse(N, volume);
@@ -248,7 +249,7 @@ TEST_P(BrownianLognormalTest, TransitionRegimeAgainstTheSectionalReference)
         return pop;
     };
     const ContinuousStatistics mc =
-        runRealisations(GetParam(), kernel, control, initial, times, binEdges, 24, 131);
+        runRealisations(GetParam(), kernel, control, initial, times, binEdges, 48, 131);
     const double M1 = N0 * std::exp(0.5 * s * s);
     for (std::size_t i = 0; i < times.size(); ++i) {
         std::ostringstream what;
@@ -269,7 +270,7 @@ TEST_P(BrownianLognormalTest, TransitionRegimeAgainstTheSectionalReference)
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Algorithms, BrownianLognormalTest, ::testing::Values("SWA", "DSA1"),
+INSTANTIATE_TEST_SUITE_P(Algorithms, BrownianLognormalTest, ::testing::Values("SWA", "DSA1", "DSA2"),
                          [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
 } // namespace
