@@ -83,7 +83,8 @@ public:
     Eigen::VectorXd integrate(const Eigen::VectorXd& N0, double t0, double t1);
 
     //- Error control per component, |err_i| <= absTol + relTol |N_i| (RMS norm);
-    //  defaults 1e-8 and 1e-16 (for numbers of order one: scale absTol with N0).
+    //  defaults 1e-8 and 1e-16 (for numbers of order one: scale absTol with N0). The step
+    //  counts are those of the last integrate call.
     void setTolerances(double relTol, double absTol);
     double lostMass() const { return lost_; }
     std::size_t acceptedSteps() const { return accepted_; }
