@@ -17,11 +17,10 @@ namespace coag {
 //  the larger particle sweeping the smaller one out of the cross-section of the sum of their
 //  radii; v is the Stokes terminal velocity with the Cunningham factor C of the gas's mean free
 //  path (SlipCorrection; Seinfeld & Pandis, Atmospheric Chemistry and Physics, eq. 9.42 for v
-//  and section 13.A for the kernel; Jacobson, Fundamentals of Atmospheric Modeling, 2nd ed.,
-//  section 15.6).
+//  and appendix 13.A for the kernel).
 //  E is the collision efficiency: 1 is the geometric (purely kinematic) collection; the
 //  literature also uses a constant below 1 or forms depending on the size ratio and the
-//  Stokes number of the smaller particle (Seinfeld & Pandis section 13.A; Pruppacher & Klett
+//  Stokes number of the smaller particle (Seinfeld & Pandis appendix 13.A; Pruppacher & Klett
 //  chapter 14). Only a constant E is implemented here.
 //  Equal particles settle together: K(z, z) = 0.
 //

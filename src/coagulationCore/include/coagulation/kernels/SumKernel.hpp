@@ -12,8 +12,8 @@
 namespace coag {
 
 //- The sum of independent coagulation mechanisms, K = sum_p K_p (e.g. Brownian motion and
-//  differential settling: their rates add when the mechanisms are independent; Seinfeld &
-//  Pandis section 13.A, Jacobson, Fundamentals of Atmospheric Modeling, 2nd ed., section 15.6).
+//  differential settling: their rates add when the mechanisms are independent, as Seinfeld &
+//  Pandis, Atmospheric Chemistry and Physics, appendix 13.A, add them).
 //  The parts are shared (a part may be held elsewhere, e.g. by a per-cell model), read only.
 //
 //  The majorant is the sum of the parts' majorants: the basis functions are the parts' ones
