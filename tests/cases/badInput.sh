@@ -166,6 +166,17 @@ expectFatal brownianNoTField   "'Brownian'.*'Tgas'.*0/Tgas" -entry kernel -set "
 expectFatal brownianDefaultT   "'Brownian'.*'T'.*0/T" -entry kernel -set "{ type Brownian; p 1e5; }"
 expectFatal brownianNegativeP  "'p' = -1"         -entry kernel -set "{ type Brownian; T 1500; p -1; }"
 expectFatal brownianMu         "sutherlnd"        -entry kernel -set "{ $brownian mu sutherlnd; }"
+# The settling kernel and sums of kernels
+settling="type gravitationalSettling; T 1500; p 1e5;"
+expectFatal settlingTypo       "colisionEfficiency" -entry kernel -set "{ $settling colisionEfficiency 0.5; }"
+expectFatal settlingNegativeE  "collisionEfficiency" -entry kernel -set "{ $settling collisionEfficiency -0.5; }"
+expectFatal settlingNoTField   "'gravitationalSettling'.*'Tgas'.*0/Tgas" -entry kernel -set "{ type gravitationalSettling; T Tgas; p 1e5; }"
+expectFatal sumOfNothing       "has no kernel"    -entry kernel -set "{ type sum; kernels { } }"
+expectFatal sumNoKernels       "'kernels'"        -entry kernel -set "{ type sum; }"
+expectFatal sumUnknownPart     "stokes"           -entry kernel -set "{ type sum; kernels { a { $brownian } b { type stokes; } } }"
+expectFatal sumPartTwice       "both of type Brownian" -entry kernel -set "{ type sum; kernels { a { $brownian } b { $brownian } } }"
+expectFatal sumPartTypo        "g0"               -entry kernel -set "{ type sum; kernels { s { $settling g0 9.81; } } }"
+expectFatal sumTooLarge        "does not fit algorithm SWA" -entry kernel -set "{ type sum; kernels { a { $brownian } b { $settling } } }"
 expectFatal particlesDensity   "'density' = -1"   -entry particles/density -set -1
 expectFatal particlesTypo      "densty"           -entry particles -set "{ densty 1800; }"
 

@@ -413,6 +413,25 @@ print("ok brownian: %d real jumps, %.3f fictitious per real one" % (real, ratio)
 PY
 fi
 
+# 19b. Brownian (continuum) coagulation and differential settling as one kernel, a sum, on
+#     the same population: runs with coagulation events; the sum's layout is 13 basis
+#     functions and 16 terms in one group, which SWA's sampler holds
+if want brownianSettling; then
+    c=$(copyCase brownianSettling)
+    gas="T 1500; p 1e5;"
+    setEntry "$c" constant/coagulationProperties kernel "{ type sum; kernels { brownian { type Brownian; regime continuum; $gas } settling { type gravitationalSettling; collisionEfficiency 0.8; $gas } } }"
+    foamDictionary "$c/constant/coagulationProperties" -entry particles \
+        -add "{ density 1800; massUnit 9.42e-22; }" > /dev/null
+    setEntry "$c" constant/coagulationProperties inception/rate 3e18
+    setEntry "$c" constant/coagulationProperties statisticalWeight/V1/SWA 1.25e-18
+    expectRun "$c"
+    grep -q "sum of 2 kernels: 13 basis functions, 16 majorant terms in 1 groups" "$c/log" \
+        || fail "brownianSettling: no sum line"
+    grep -q "collision efficiency 0.8" "$c/log" || fail "brownianSettling: no settling line"
+    awk '/coagulation events/ { n = $4 } END { exit !(n > 0) }' "$c/log" \
+        || fail "brownianSettling: no coagulation event"
+fi
+
 # 20. Dictionary variables: an entry that the file references with $ is a variable, not a typo
 if want variables; then
     c=$(copyCase variables)

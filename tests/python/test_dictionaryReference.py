@@ -82,6 +82,11 @@ SECTIONS = {
         [("kernel", "none")],
     (MODELS + "submodels/coagulationKernels/Brownian/Brownian.C", "readRegime", 0):
         [("kernel", "Brownian")],
+    (MODELS + "submodels/coagulationKernels/gravitationalSettling/gravitationalSettling.C",
+     "readLayout", 0):
+        [("kernel", "gravitationalSettling")],
+    (MODELS + "submodels/coagulationKernels/sum/sum.C", "readParts", 0):
+        [("kernel", "sum")],
     (MODELS + "clouds/particleMaterial/particleMaterial.C", "readParticleMaterial", 0):
         [("particles", None)],
     (MODELS + "submodels/inceptionModels/uniformInception/uniformInception.C", "uniform", 0):

@@ -17,6 +17,8 @@
 #include "coagulation/population/LargeArray.hpp"
 #include "coagulation/kernels/CoagulationKernel.hpp"
 #include "coagulation/kernels/BrownianKernel.hpp"
+#include "coagulation/kernels/GravitationalSettlingKernel.hpp"
+#include "coagulation/kernels/SumKernel.hpp"
 #include "coagulation/aerosol/AerosolProperties.hpp"
 #include "coagulation/sampling/QuantizedSumTree.hpp"
 #include "coagulation/sampling/MajorantSampler.hpp"

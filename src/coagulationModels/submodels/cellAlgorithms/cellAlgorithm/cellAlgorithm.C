@@ -9,6 +9,8 @@
 #include "coagulationKernel.H"
 #include "error.H"
 
+#include <stdexcept>
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 namespace Foam
@@ -63,7 +65,21 @@ Foam::coagulation::cellAlgorithm::New
         ) << exit(FatalIOError);
     }
 
-    return autoPtr<cellAlgorithm>(cstrIter()(kernel, inception, control));
+    // The core refuses a kernel its pair sampler cannot hold (too many basis
+    // functions, majorant terms, groups or stored columns: a large sum of
+    // kernels): name the entry, not a C++ exception
+    try
+    {
+        return autoPtr<cellAlgorithm>(cstrIter()(kernel, inception, control));
+    }
+    catch (const std::invalid_argument& e)
+    {
+        FatalIOErrorInFunction(dict)
+            << "The kernel of entry 'kernel' in " << dict.name()
+            << " does not fit algorithm " << algorithmType << ": " << e.what()
+            << nl << exit(FatalIOError);
+    }
+    return autoPtr<cellAlgorithm>();
 }
 
 

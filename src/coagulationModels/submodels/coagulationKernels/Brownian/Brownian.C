@@ -41,10 +41,7 @@ Foam::coagulation::coagulationKernels::Brownian::readRegime
     const dictionary& dict
 )
 {
-    caseChecks::keywords
-    (
-        dict, {"type", "regime", "T", "p", "mu", "As", "Ts", "molarMass"}
-    );
+    cellGas::checkGasKeywords(dict, {"type", "regime"});
     const word regime(dict.getOrDefault<word>("regime", "transition"));
     try
     {
@@ -58,32 +55,6 @@ Foam::coagulation::coagulationKernels::Brownian::readRegime
             << " and transition" << nl << exit(FatalIOError);
     }
     return coag::BrownianRegime::transition;
-}
-
-
-Foam::scalarField
-Foam::coagulation::coagulationKernels::Brownian::cellValues
-(
-    const dictionary& dict,
-    const word& key,
-    const dimensionSet& dims,
-    const fvMesh& mesh,
-    autoPtr<volScalarField>& field
-)
-{
-    if (dict.found(key) && !dict.lookup(key)[0].isWord())
-    {
-        return scalarField(mesh.nCells(), caseChecks::positive(dict, key));
-    }
-    field = caseChecks::cellField
-    (
-        dict, modelName, key, dict.getOrDefault<word>(key, key), mesh, dims,
-        true
-    );
-    Info<< "    " << key << " from field " << field->name() << ": "
-        << gMin(field->primitiveField()) << " to "
-        << gMax(field->primitiveField()) << endl;
-    return field->primitiveField();
 }
 
 
@@ -105,11 +76,11 @@ Foam::coagulation::coagulationKernels::Brownian::Brownian
         (
             readRegime(dict),
             coag::GasState(),
-            readParticleMaterial(dict.parent(), modelName)
+            // the top-level 'particles' entry, also for a part of a sum
+            readParticleMaterial(dict.topDict(), modelName)
         )
     ),
-    T_(),
-    p_()
+    gas_(dict, modelName, mesh)
 {
     // The regime and material read for the base's kernel
     const coag::BrownianKernel& layout =
@@ -117,50 +88,23 @@ Foam::coagulation::coagulationKernels::Brownian::Brownian
     const coag::BrownianRegime regime = layout.regime();
     const coag::ParticleMaterial& material = layout.material();
 
-    const scalarField T(cellValues(dict, "T", dimTemperature, mesh, T_));
-    const scalarField p(cellValues(dict, "p", dimPressure, mesh, p_));
-
-    // mu: a value, or Sutherland's law on each cell's T
-    const bool sutherland =
-        !dict.found("mu") || dict.lookup("mu")[0].isWord();
-    if (sutherland && dict.found("mu") && dict.get<word>("mu") != "sutherland")
+    cellKernels().reserve(gas_.size());
+    for (label celli = 0; celli < gas_.size(); ++celli)
     {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'mu' = " << dict.get<word>("mu") << " in " << dict.name()
-            << " is neither a value [Pa s] nor sutherland" << nl
-            << exit(FatalIOError);
-    }
-    const scalar mu = sutherland ? 0 : caseChecks::positive(dict, "mu");
-    const scalar As =
-        dict.found("As") ? caseChecks::positive(dict, "As") : 1.458e-6;
-    const scalar Ts =
-        dict.found("Ts") ? caseChecks::positive(dict, "Ts") : 110.4;
-    coag::GasState gas;
-    if (dict.found("molarMass"))
-    {
-        gas.molarMass = caseChecks::positive(dict, "molarMass");
-    }
-
-    cellKernels().reserve(T.size());
-    scalar lowest = GREAT, highest = 0;
-    forAll(T, celli)
-    {
-        gas.T = T[celli];
-        gas.p = p[celli];
-        gas.mu = sutherland ? coag::sutherlandViscosity(gas.T, As, Ts) : mu;
         cellKernels().push_back
         (
-            std::make_unique<coag::BrownianKernel>(regime, gas, material)
+            std::make_unique<coag::BrownianKernel>
+            (
+                regime, gas_[celli], material
+            )
         );
-        lowest = min(lowest, gas.meanFreePath());
-        highest = max(highest, gas.meanFreePath());
     }
 
+    const Pair<scalar> lambda = gas_.meanFreePathRange();
     Info<< "    regime " << coag::brownianRegimeName(regime).c_str()
         << ", particle density " << material.density << " kg/m3, mass unit "
         << material.massUnit << " kg, mean free path from "
-        << returnReduce(lowest, minOp<scalar>()) << " to "
-        << returnReduce(highest, maxOp<scalar>()) << " m" << endl;
+        << lambda.first() << " to " << lambda.second() << " m" << endl;
 }
 
 
