@@ -1,7 +1,8 @@
 #!/bin/bash
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 # The hot reactor tutorial from its own Allrun, reduced (75 x 15 cells, 300 flow iterations,
-# 0.2 s of particles with half as many): buoyantSimpleFoam -> plugFlowReference ->
+# 0.2 s of particles in steps of 1e-3 s; the weight W = Vref/(n V1) doubles with the cell
+# volume, so half as many particles): buoyantSimpleFoam -> plugFlowReference ->
 # coagulationFoam with the Brownian transition kernel on the flow's T and p -> the plots'
 # table. The mass and particle balances close (with deposition on both walls); the kernel
 # reads T and p as fields, T over several hundred kelvin; the count mean diameter d10 on the
@@ -25,7 +26,6 @@ setEntry . system/controlDict deltaT 1e-3
 setEntry . system/controlDict writeInterval 0.1
 setEntry . constant/coagulationProperties sampling/tRelax 0.12
 setEntry . constant/coagulationProperties cloudFunctions/psdAxis/timeStart 0.12
-setEntry . constant/coagulationProperties statisticalWeight/V1 8e-16
 
 ./Allrun > log.Allrun 2>&1 || { tail -30 log.Allrun; fail "Allrun"; }
 checkBalance log.coagulationFoam
