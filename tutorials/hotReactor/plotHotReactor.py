@@ -1,0 +1,172 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
+"""The hot reactor's plots: coagulationFoam's time-averaged size distributions at the axis
+probes (sizeDistribution 'psdAxis', postProcessing/psdAxis/<last write>/) against the
+plug-flow solution of plugFlowReference (results/plugFlow.csv, plugFlowSizes.csv).
+
+  plotHotReactor.py --case . --out results [--no-plots]
+
+Writes OUT/axial.csv (each probe: x, the residence time and T of the plug flow, coagulationFoam's
+M0 and count mean diameter d10 with their 95 % intervals, the plug flow's), OUT/psd.png
+(dN/dlog10 d [m^-3] against d [nm] at the probes: coagulationFoam with its 95 % intervals,
+the plug flow binned in the same mass bins) and OUT/meanDiameter.png (d10 along the axis, with
+the axis's temperature). Prints one line a probe. Diameters of spheres of the particles'
+density: d = (6 m massUnit/(pi rho))^(1/3), masses in the case's massUnit.
+"""
+
+import argparse
+import csv
+import math
+import os
+import sys
+
+import numpy as np
+
+from coagulationPost import psd as psdlib
+
+
+def read_rows(path):
+    with open(path) as f:
+        return list(csv.DictReader(line for line in f if not line.startswith("#")))
+
+
+def foam_value(case, entry):
+    """A scalar of constant/coagulationProperties (a 'particles' entry), by a plain parse."""
+    import re
+    text = open(os.path.join(case, "constant", "coagulationProperties")).read()
+    block = re.search(r"\bparticles\s*\{([^}]*)\}", text).group(1)
+    return float(re.search(r"\b%s\s+([^;\s]+)\s*;" % entry, block).group(1))
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--case", default=".")
+    ap.add_argument("--out", default="results")
+    ap.add_argument("--name", default="psdAxis")
+    ap.add_argument("--no-plots", action="store_true")
+    a = ap.parse_args(argv)
+    os.makedirs(a.out, exist_ok=True)
+
+    rho = foam_value(a.case, "density")
+    unit = foam_value(a.case, "massUnit")
+
+    def diam_nm(m):
+        return 1e9 * (6.0 * np.asarray(m, float) * unit / (math.pi * rho)) ** (1.0 / 3.0)
+
+    # coagulationFoam: the solver's averages at the last write time
+    rows, derived = psdlib.read_csv(a.case, a.name)
+    folder = os.path.join(a.case, "postProcessing", a.name)
+    last = [d for d in psdlib._time_dirs(folder)
+            if os.path.exists(os.path.join(folder, d, "regions.csv"))][-1]
+    regions = read_rows(os.path.join(folder, last, "regions.csv"))
+    xs = np.array([float(r["x"]) for r in regions])
+    nreg = len(regions)
+    bins = sorted({int(r["bin"]) for r in rows if 0 <= int(r["bin"])})
+    nb = len(bins)
+    lower = np.zeros(nb)
+    upper = np.zeros(nb)
+    mean = np.zeros((nreg, nb))
+    ci = np.zeros((nreg, nb))
+    for r in rows:
+        i, b = int(r["region"]), int(r["bin"])
+        if 0 <= b < nb:
+            lower[b], upper[b] = r["lower"], r["upper"]
+            mean[i, b], ci[i, b] = r["mean"], r["ci95"]
+    der = {(int(r["region"]), r["quantity"]): r for r in derived}
+
+    # the plug flow: along the axis, and its sizes at the probes
+    plug = read_rows(os.path.join(a.out, "plugFlow.csv"))
+    px = np.array([float(r["x"]) for r in plug])
+    pT = np.array([float(r["T"]) for r in plug])
+    pt = np.array([float(r["t"]) for r in plug])
+    pd10 = np.array([float(r["d10_nm"]) for r in plug])
+    pM0 = np.array([float(r["M0"]) for r in plug])
+    sizes = read_rows(os.path.join(a.out, "plugFlowSizes.csv"))
+    sx = np.array([float(r["x"]) for r in sizes])
+    sm = np.array([float(r["mass"]) for r in sizes])
+    sn = np.array([float(r["n"]) for r in sizes])
+
+    # dN/dlog10 d of a bin: its number density over the width of log10 d (d ~ m^(1/3))
+    dlog = np.log10(upper / lower) / 3.0
+    centre_nm = diam_nm(np.sqrt(lower * upper))
+    plug_binned = np.zeros((nreg, nb))
+    for i, x in enumerate(xs):
+        sel = np.isclose(sx, x, atol=1e-9)
+        idx = np.searchsorted(upper, sm[sel], side="right")
+        ok = idx < nb
+        np.add.at(plug_binned[i], idx[ok], sn[sel][ok])
+
+    out_rows = []
+    for i, x in enumerate(xs):
+        d10 = der[(i, "d10")]
+        m0 = der[(i, "M0")]
+        row = {
+            "x": x,
+            "t_plug": float(np.interp(x, px, pt)),
+            "T_axis": float(np.interp(x, px, pT)),
+            "M0_foam": m0["mean"], "M0_foam_ci95": m0["ci95"],
+            "M0_plug": float(np.interp(x, px, pM0)),
+            "d10_nm_foam": 1e9 * d10["mean"], "d10_nm_foam_ci95": 1e9 * d10["ci95"],
+            "d10_nm_plug": float(np.interp(x, px, pd10)),
+        }
+        out_rows.append(row)
+        print("x = %.3f m (t = %.4f s, T = %.0f K): d10 coagulationFoam %.3f +- %.3f nm, plug flow "
+              "%.3f nm; M0 %.3e +- %.1e, plug flow %.3e m^-3"
+              % (x, row["t_plug"], row["T_axis"], row["d10_nm_foam"], row["d10_nm_foam_ci95"],
+                 row["d10_nm_plug"], row["M0_foam"], row["M0_foam_ci95"], row["M0_plug"]))
+    with open(os.path.join(a.out, "axial.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(out_rows[0]))
+        w.writeheader()
+        w.writerows(out_rows)
+    if a.no_plots:
+        return 0
+
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(7.5, 5))
+    colours = plt.cm.viridis(np.linspace(0, 0.9, nreg))
+    # bins that hold no integer mass (the smallest) are left out: they are empty in both
+    holds = np.ceil(lower) < upper
+    for i, x in enumerate(xs):
+        y = mean[i] / dlog
+        e = ci[i] / dlog
+        ax.errorbar(centre_nm[holds], y[holds], yerr=e[holds], fmt="o", ms=3, color=colours[i], capsize=0,
+                    label="x = %.2f m, t = %.0f ms" % (x, 1e3 * out_rows[i]["t_plug"]))
+        ax.plot(centre_nm[holds], (plug_binned[i] / dlog)[holds], "-", color=colours[i], lw=1)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    top = max(np.max(mean / dlog), np.max(plug_binned / dlog))
+    ax.set_ylim(top * 1e-3, top * 2)
+    used = np.any(mean > 0, axis=0) | np.any(plug_binned > 0, axis=0)
+    ax.set_xlim(0.9 * centre_nm[used].min(), 1.2 * centre_nm[used].max())
+    ax.set_xlabel("d [nm]")
+    ax.set_ylabel(r"dN/dlog$_{10}$d [m$^{-3}$]")
+    ax.set_title("Size distribution on the axis: coagulationFoam (points, 95 % CI)\n"
+                 "and the plug flow at the same residence time (lines)")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(a.out, "psd.png"), dpi=120)
+    plt.close(fig)
+
+    fig, ax = plt.subplots(figsize=(7.5, 4.5))
+    ax.plot(px, pd10, "k-", label="plug flow (axis T history), d10")
+    ax.errorbar(xs, [r["d10_nm_foam"] for r in out_rows],
+                yerr=[r["d10_nm_foam_ci95"] for r in out_rows], fmt="o", color="C0",
+                label="coagulationFoam on the axis, d10 (95 % CI)")
+    ax.set_xlabel("x [m]")
+    ax.set_ylabel("count mean diameter d10 [nm]")
+    ax2 = ax.twinx()
+    ax2.plot(px, pT, "C3--", lw=1)
+    ax2.set_ylabel("axis temperature [K]", color="C3")
+    ax.legend(loc="upper left", fontsize=8)
+    ax.set_title("Mean diameter along the reactor (T: dashed)")
+    fig.tight_layout()
+    fig.savefig(os.path.join(a.out, "meanDiameter.png"), dpi=120)
+    plt.close(fig)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
