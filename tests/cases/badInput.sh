@@ -158,6 +158,8 @@ echo "ok stopAt nextWrite runs to the first write"
 # The Brownian kernel and the particles' material
 brownian="type Brownian; T 1500; p 1e5;"
 expectFatal brownianNoParticles "needs the particles' material" -entry kernel -set "{ $brownian }"
+expectFatal diameterNoParticles "inception (its 'diameter') needs the particles' material" -entry inception -set "{ rate 1e10; diameter 1e-8; }"
+expectFatal massAndDiameter    "exactly one of 'mass'" -entry inception -set "{ rate 1e10; mass 1; diameter 1e-8; }"
 (cd "$base" && foamDictionary constant/coagulationProperties -entry particles \
     -add "{ density 1800; massUnit 9.42e-22; }" > /dev/null)
 expectFatal brownianRegime     "slipFlow"         -entry kernel -set "{ $brownian regime slipFlow; }"
@@ -179,6 +181,8 @@ expectFatal sumPartTypo        "g0"               -entry kernel -set "{ type sum
 expectFatal sumTooLarge        "does not fit algorithm SWA" -entry kernel -set "{ type sum; kernels { a { $brownian } b { $settling } } }"
 expectFatal particlesDensity   "'density' = -1"   -entry particles/density -set -1
 expectFatal particlesTypo      "densty"           -entry particles -set "{ densty 1800; }"
+expectFatal inflowDiameter     "'diameter' = -1"  -entry inflow -set "{ patches (inlet); density 1e9; diameter -1; }"
+expectFatal initialSizeTwice   "exactly one of 'mass'" -entry initialPopulation -set "{ numberDensity 1e9; diameter 1e-8; sizeDistribution ((1 1)); }"
 
 (cd "$base" && foamDictionary constant/coagulationProperties -entry algorithm -set DSA1 > /dev/null)
 expectFatal dsaNumberControl   "maxParticlesPerCell" -entry numberControl -set "{ maxParticlesPerCell 100; }"

@@ -391,6 +391,9 @@ if want brownian; then
     # 1e10 times the duct's inception and weight: the same computational particles, number
     # densities near 1e16 per m3 that coagulate within the run
     setEntry "$c" constant/coagulationProperties inception/rate 3e18
+    # the incepted particles given by their diameter: 10 nm, 1.0005 monomers of this material
+    foamDictionary "$c/constant/coagulationProperties" -entry inception/mass -remove > /dev/null
+    foamDictionary "$c/constant/coagulationProperties" -entry inception/diameter -add 1e-8 > /dev/null
     setEntry "$c" constant/coagulationProperties statisticalWeight/V1/SWA 1.25e-18
     expectRun "$c"
     grep -q "regime transition, particle density 1800" "$c/log" || fail "brownian: no kernel line"
@@ -423,6 +426,9 @@ if want brownianSettling; then
     foamDictionary "$c/constant/coagulationProperties" -entry particles \
         -add "{ density 1800; massUnit 9.42e-22; }" > /dev/null
     setEntry "$c" constant/coagulationProperties inception/rate 3e18
+    # the incepted particles given by their diameter: 10 nm, 1.0005 monomers of this material
+    foamDictionary "$c/constant/coagulationProperties" -entry inception/mass -remove > /dev/null
+    foamDictionary "$c/constant/coagulationProperties" -entry inception/diameter -add 1e-8 > /dev/null
     setEntry "$c" constant/coagulationProperties statisticalWeight/V1/SWA 1.25e-18
     expectRun "$c"
     grep -q "sum of 2 kernels: 13 basis functions, 16 majorant terms in 1 groups" "$c/log" \

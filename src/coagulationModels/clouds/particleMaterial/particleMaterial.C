@@ -35,4 +35,27 @@ coag::ParticleMaterial Foam::coagulation::readParticleMaterial
 }
 
 
+Foam::scalar Foam::coagulation::readParticleMass
+(
+    const dictionary& dict,
+    const string& model
+)
+{
+    if (dict.found("mass") == dict.found("diameter"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Dictionary " << dict.name() << " needs exactly one of 'mass'"
+            << " (in the particles' massUnit) and 'diameter' (m, a sphere of"
+            << " the particles' material)" << nl << exit(FatalIOError);
+    }
+    if (dict.found("mass"))
+    {
+        return caseChecks::positive(dict, "mass");
+    }
+    const coag::ParticleMaterial material =
+        readParticleMaterial(dict.topDict(), model + " (its 'diameter')");
+    return material.mass(caseChecks::positive(dict, "diameter"));
+}
+
+
 // ************************************************************************* //

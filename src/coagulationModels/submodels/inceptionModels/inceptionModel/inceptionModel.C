@@ -6,6 +6,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "inceptionModel.H"
+#include "particleMaterial.H"
 #include "caseChecks.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -32,7 +33,7 @@ Foam::coagulation::inceptionModel::inceptionModel
 :
     core_()
 {
-    wordList valid({"type", "mass"});
+    wordList valid({"type", "mass", "diameter"});
     if (rateEntry)
     {
         valid.append("rate");
@@ -40,7 +41,7 @@ Foam::coagulation::inceptionModel::inceptionModel
     valid.append(keywords);
     caseChecks::keywords(dict, valid);
     core_.rate = rateEntry ? caseChecks::nonNegative(dict, "rate") : 0;
-    core_.type.mass = caseChecks::positive(dict, "mass");
+    core_.type.mass = readParticleMass(dict, "inception");
     core_.weight = particleWeight;
 }
 

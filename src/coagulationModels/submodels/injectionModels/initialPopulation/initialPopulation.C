@@ -6,6 +6,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "initialPopulation.H"
+#include "particleMaterial.H"
 #include "coagulationCloud.H"
 #include "caseChecks.H"
 #include "cellTetSampler.H"
@@ -32,6 +33,7 @@ Foam::coagulation::initialPopulation::initialPopulation
         dict,
         {
             "numberDensity", "numberDensityField", "cellZone", "mass",
+            "diameter",
             "sizeDistribution"
         }
     );
@@ -88,16 +90,17 @@ Foam::coagulation::initialPopulation::initialPopulation
     }
 
     // The particle masses: one, or a table of (mass, number fraction)
-    if (dict.found("mass") == dict.found("sizeDistribution"))
+    const bool oneSize = dict.found("mass") || dict.found("diameter");
+    if (oneSize == dict.found("sizeDistribution"))
     {
         FatalIOErrorInFunction(dict)
             << "Dictionary " << dict.name() << " needs exactly one of 'mass'"
-            << " (monodisperse) and 'sizeDistribution' ((mass fraction)"
-            << " pairs)" << nl << exit(FatalIOError);
+            << " or 'diameter' (monodisperse) and 'sizeDistribution'"
+            << " ((mass fraction) pairs)" << nl << exit(FatalIOError);
     }
-    if (dict.found("mass"))
+    if (oneSize)
     {
-        masses_ = scalarField(1, caseChecks::positive(dict, "mass"));
+        masses_ = scalarField(1, readParticleMass(dict, "initial population"));
         cumulative_ = scalarField(1, scalar(1));
     }
     else

@@ -6,6 +6,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "patchInflow.H"
+#include "particleMaterial.H"
 #include "coagulationCloud.H"
 #include "caseChecks.H"
 #include "surfaceFields.H"
@@ -41,10 +42,13 @@ Foam::coagulation::injectionModels::patchInflow::patchInflow
     mass_(1),
     rng_(0)
 {
-    caseChecks::keywords(dict, {"type", "patches", "density", "mass"});
+    caseChecks::keywords
+    (
+        dict, {"type", "patches", "density", "mass", "diameter"}
+    );
     const wordList patchNames(dict.get<wordList>("patches"));
     density_ = caseChecks::nonNegative(dict, "density");
-    mass_ = caseChecks::positive(dict, "mass");
+    mass_ = readParticleMass(dict, "inflow");
 
     if (density_ > 0 && patchNames.empty())
     {
