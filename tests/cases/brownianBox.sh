@@ -10,13 +10,13 @@
 tEntry="${1:-T}"
 reference="$COAGULATIONFOAM_BUILD/applications/studies/brownianReference"
 [ -x "$reference" ] || fail "no $reference (./Allwmake)"
+# the case writers and readers of the random-walk tests (dispersionCases.py)
+export PYTHONPATH="$COAGULATIONFOAM_DIR/tests/cases:$COAGULATIONFOAM_DIR/src/python${PYTHONPATH:+:$PYTHONPATH}"
 
 c=$(newCase constantKernelDuct brownianBox)
 cd "$c"
 rm -rf constant/polyMesh log.blockMesh
 "$COAGULATIONFOAM_PYTHON" - <<'PY'
-import sys
-sys.path.insert(0, __import__("os").environ["COAGULATIONFOAM_DIR"] + "/tests/cases")
 from dispersionCases import HEADER, block_mesh, zero_velocity
 nx, ny = 6, 16
 patches = {"walls": ("wall", ["left", "right", "bottom", "top"]),
@@ -57,7 +57,6 @@ checkBalance log.coagulationFoam
 import sys
 import numpy as np
 from scipy import stats
-sys.path.insert(0, __import__("os").environ["COAGULATIONFOAM_DIR"] + "/tests/cases")
 from dispersionCases import read_field
 nx, ny = 6, 16
 ref = np.genfromtxt("reference.csv", delimiter=",", names=True)
