@@ -172,6 +172,7 @@ expectFatal brownianMu         "sutherlnd"        -entry kernel -set "{ $brownia
 settling="type gravitationalSettling; T 1500; p 1e5;"
 expectFatal settlingTypo       "colisionEfficiency" -entry kernel -set "{ $settling colisionEfficiency 0.5; }"
 expectFatal settlingNegativeE  "collisionEfficiency" -entry kernel -set "{ $settling collisionEfficiency -0.5; }"
+expectFatal settlingZeroG      "'g' = 0"          -entry kernel -set "{ $settling g 0; }"
 expectFatal settlingNoTField   "'gravitationalSettling'.*'Tgas'.*0/Tgas" -entry kernel -set "{ type gravitationalSettling; T Tgas; p 1e5; }"
 expectFatal sumOfNothing       "has no kernel"    -entry kernel -set "{ type sum; kernels { } }"
 expectFatal sumNoKernels       "'kernels'"        -entry kernel -set "{ type sum; }"
@@ -182,6 +183,7 @@ expectFatal sumTooLarge        "does not fit algorithm SWA" -entry kernel -set "
 expectFatal particlesDensity   "'density' = -1"   -entry particles/density -set -1
 expectFatal particlesTypo      "densty"           -entry particles -set "{ densty 1800; }"
 expectFatal inflowDiameter     "'diameter' = -1"  -entry inflow -set "{ patches (inlet); density 1e9; diameter -1; }"
+expectFatal tinyDiameter       "outside the range" -entry inception -set "{ rate 1e10; diameter 1e-120; }"
 expectFatal initialSizeTwice   "exactly one of 'mass'" -entry initialPopulation -set "{ numberDensity 1e9; diameter 1e-8; sizeDistribution ((1 1)); }"
 
 (cd "$base" && foamDictionary constant/coagulationProperties -entry algorithm -set DSA1 > /dev/null)

@@ -3,12 +3,13 @@
 # the transition Brownian kernel on the cell's T: every cell is a closed cell at its own
 # temperature. 6 x 16 cells, 1000 particles of 10 nm (1800 kg/m3) per cell at 1e17 per m3;
 # at t = 0.005 and 0.01 s each column's M0, over its 16 independent cells, against the
-# sectional reference at the column's T (brownianReference), a 99.9 % t-interval; M1
+# discrete Smoluchowski reference at the column's T (plugFlowReference along a gas at rest
+# in time: a constant-T axis crossed at 1 m/s), a 99.9 % t-interval; M1
 # exact in every cell (nothing moves, no source). ${1:-T}: the temperature entry (a planted
 # bug runs it with a uniform one, 'T 600', and must fail).
 . "$(dirname "$0")/caseLib.sh"
 tEntry="${1:-T}"
-reference="$COAGULATIONFOAM_BUILD/applications/studies/brownianReference"
+reference="$COAGULATIONFOAM_BUILD/applications/studies/plugFlowReference"
 [ -x "$reference" ] || fail "no $reference (./Allwmake)"
 # the case writers and readers of the random-walk tests (dispersionCases.py)
 export PYTHONPATH="$COAGULATIONFOAM_DIR/tests/cases:$COAGULATIONFOAM_DIR/src/python${PYTHONPATH:+:$PYTHONPATH}"
@@ -50,16 +51,19 @@ setEntry . system/controlDict writeFormat ascii
 foamDictionary -entry functions -remove system/controlDict > /dev/null 2>&1 || true
 runApplication coagulationFoam
 checkBalance log.coagulationFoam
-"$reference" -regime transition -T "300 420 540 660 780 900" -p 1e5 -density 1800 \
-    -massUnit 9.42e-22 -N0 1e17 -times "0.005 0.01" > reference.csv \
-    || fail "brownianReference failed"
+# each column's closed cell: a parcel at the column's T crossing x = t at U = 1 m/s
+for T in 300 420 540 660 780 900; do
+    mkdir -p "reference/$T"
+    printf '0 %s 1e5 1\n0.005 %s 1e5 1\n0.01 %s 1e5 1\n' $T $T $T > "reference/$T/axis"
+    "$reference" "reference/$T/axis" "reference/$T" --density 1800 --massUnit 9.42e-22 \
+        --n0 1e17 --regime transition --L 200 > /dev/null || fail "plugFlowReference failed at $T K"
+done
 "$COAGULATIONFOAM_PYTHON" - <<'PY' || fail "a column is off the closed-cell solution at its temperature"
 import sys
 import numpy as np
 from scipy import stats
 from dispersionCases import read_field
 nx, ny = 6, 16
-ref = np.genfromtxt("reference.csv", delimiter=",", names=True)
 ok = True
 for t in ("0.005", "0.01"):
     m0 = np.broadcast_to(read_field(".", t, "M0"), nx * ny).reshape(ny, nx)
@@ -68,7 +72,8 @@ for t in ("0.005", "0.01"):
         print("M1 not conserved at", t, m1.min(), m1.max()); ok = False
     for i in range(nx):
         T = 300.0 + 600.0 * i / (nx - 1)
-        r = ref["M0"][(np.abs(ref["T"] - T) < 1e-9) & (np.abs(ref["time"] - float(t)) < 1e-12)][0]
+        ref = np.genfromtxt("reference/%d/plugFlow.csv" % round(T), delimiter=",", names=True)
+        r = ref["M0"][np.abs(ref["t"] - float(t)) < 1e-12][0]
         col = m0[:, i]
         se = col.std(ddof=1) / np.sqrt(ny)
         half = stats.t.ppf(0.9995, ny - 1) * se

@@ -20,6 +20,20 @@ copyCase()
     rm -rf "$c"; cp -r "$base" "$c"; echo "$c"
 }
 
+# aerosolPopulation case: the duct's particles as an aerosol, 10 nm spheres of 1800 kg/m3
+# (masses in monomers of 9.42e-22 kg) incepted by their diameter (1.0005 monomers), at 1e10
+# times the duct's inception and weight: the same computational particles, number densities
+# near 1e16 per m3 that coagulate within the run
+aerosolPopulation()
+{
+    local props="$1/constant/coagulationProperties"
+    foamDictionary "$props" -entry particles -add "{ density 1800; massUnit 9.42e-22; }" > /dev/null
+    setEntry "$1" constant/coagulationProperties inception/rate 3e18
+    foamDictionary "$props" -entry inception/mass -remove > /dev/null
+    foamDictionary "$props" -entry inception/diameter -add 1e-8 > /dev/null
+    setEntry "$1" constant/coagulationProperties statisticalWeight/V1/SWA 1.25e-18
+}
+
 # runCase case [timeout]: the solver, rc in $rc; a signal or a time-out fails the test
 runCase()
 {
@@ -381,20 +395,12 @@ if want noKernel; then
     grep -q "particles in/incepted/out  = 0 / [1-9]" "$c/log" || fail "noKernel: no inception"
 fi
 
-# 19. Brownian coagulation (transition regime) of 10 nm spheres in air at 1500 K, 1 bar,
-#     masses in monomers of 9.42e-22 kg: runs with coagulation events and closed balances
+# 19. Brownian coagulation (transition regime) of 10 nm spheres in air at 1500 K, 1 bar:
+#     runs with coagulation events and closed balances
 if want brownian; then
     c=$(copyCase brownian)
     setEntry "$c" constant/coagulationProperties kernel "{ type Brownian; T 1500; p 1e5; }"
-    foamDictionary "$c/constant/coagulationProperties" -entry particles \
-        -add "{ density 1800; massUnit 9.42e-22; }" > /dev/null
-    # 1e10 times the duct's inception and weight: the same computational particles, number
-    # densities near 1e16 per m3 that coagulate within the run
-    setEntry "$c" constant/coagulationProperties inception/rate 3e18
-    # the incepted particles given by their diameter: 10 nm, 1.0005 monomers of this material
-    foamDictionary "$c/constant/coagulationProperties" -entry inception/mass -remove > /dev/null
-    foamDictionary "$c/constant/coagulationProperties" -entry inception/diameter -add 1e-8 > /dev/null
-    setEntry "$c" constant/coagulationProperties statisticalWeight/V1/SWA 1.25e-18
+    aerosolPopulation "$c"
     expectRun "$c"
     grep -q "regime transition, particle density 1800" "$c/log" || fail "brownian: no kernel line"
     awk '/coagulation events/ { n = $4 } END { exit !(n > 0) }' "$c/log" \
@@ -423,13 +429,7 @@ if want brownianSettling; then
     c=$(copyCase brownianSettling)
     gas="T 1500; p 1e5;"
     setEntry "$c" constant/coagulationProperties kernel "{ type sum; kernels { brownian { type Brownian; regime continuum; $gas } settling { type gravitationalSettling; collisionEfficiency 0.8; $gas } } }"
-    foamDictionary "$c/constant/coagulationProperties" -entry particles \
-        -add "{ density 1800; massUnit 9.42e-22; }" > /dev/null
-    setEntry "$c" constant/coagulationProperties inception/rate 3e18
-    # the incepted particles given by their diameter: 10 nm, 1.0005 monomers of this material
-    foamDictionary "$c/constant/coagulationProperties" -entry inception/mass -remove > /dev/null
-    foamDictionary "$c/constant/coagulationProperties" -entry inception/diameter -add 1e-8 > /dev/null
-    setEntry "$c" constant/coagulationProperties statisticalWeight/V1/SWA 1.25e-18
+    aerosolPopulation "$c"
     expectRun "$c"
     grep -q "sum of 2 kernels: 13 basis functions, 16 majorant terms in 1 groups" "$c/log" \
         || fail "brownianSettling: no sum line"

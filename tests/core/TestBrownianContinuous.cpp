@@ -124,30 +124,6 @@ ReferenceSeries referenceSeries(SectionalSmoluchowski& ref, Eigen::VectorXd N,
     return s;
 }
 
-//- The two closed cells of the self-preserving test: free-molecular (10 nm spheres of
-//  1800 kg/m3 in air at 1500 K and 1 bar; the free-molecular kernel is homogeneous, so the
-//  size does not matter) and continuum without slip (1 um spheres of 1000 kg/m3 in air at
-//  298 K and 100 bar: Kn = 0.0013, Cunningham factor 1.002 at the start, closer to 1 as they
-//  grow). Masses in the monomer's.
-BrownianKernel selfPreservingKernel(BrownianRegime regime)
-{
-    GasState gas;
-    ParticleMaterial material{1800.0};
-    if (regime == BrownianRegime::freeMolecular) {
-        gas.T = 1500.0;
-        gas.p = 1e5;
-        gas.mu = sutherlandViscosity(gas.T);
-        material.massUnit = material.mass(10e-9);
-    } else {
-        gas.T = 298.15;
-        gas.p = 1e7;
-        gas.mu = 1.8e-5;
-        material.density = 1000.0;
-        material.massUnit = material.mass(1e-6);
-    }
-    return BrownianKernel(regime, gas, material);
-}
-
 //- Closed cell, monodisperse start, free-molecular and continuum kernels, N0 = 1/K11 (times
 //  in 1/(K11 N0)), from 0.1 to 1000 coagulation-time units: the number concentration against
 //  the sectional reference (32 sections per mass doubling), and the geometric standard

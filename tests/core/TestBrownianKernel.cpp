@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 // Brownian coagulation of aerosol spheres: the gas and particle quantities against textbook
 // values, the regimes' limits, and the product-sum majorants the algorithms sample from.
+#include "TestHelpers.hpp"
+
 #include "coagulation/kernels/BrownianKernel.hpp"
 #include "coagulation/aerosol/AerosolProperties.hpp"
 #include "coagulation/sampling/MajorantSampler.hpp"
@@ -12,29 +14,12 @@
 #include <memory>
 #include <vector>
 
-using namespace coag;
+using namespace coagtest;
 
 namespace {
 
 const BrownianRegime allRegimes[] = {BrownianRegime::freeMolecular, BrownianRegime::continuum,
                                      BrownianRegime::transition};
-
-GasState air(double T, double p)
-{
-    GasState g;
-    g.T = T;
-    g.p = p;
-    g.mu = sutherlandViscosity(T);
-    return g;
-}
-
-//- Diameters from 1 nm to 100 um, five a decade
-std::vector<double> diameters()
-{
-    std::vector<double> d;
-    for (int i = 0; i <= 25; ++i) d.push_back(1e-9 * std::pow(10.0, i / 5.0));
-    return d;
-}
 
 //- The least Khat / K over the grid of the acceptance test: both diameters 1 nm to 100 um,
 //  T 250 to 2500 K, p 0.1 to 10 bar, densities 1000 and 4000 kg/m3
@@ -46,8 +31,8 @@ double leastMajorantRatio(BrownianRegime regime, double scale = 1.0)
             for (double rho : {1000.0, 4000.0}) {
                 const ParticleMaterial material{rho};
                 const BrownianKernel K(regime, air(T, p), material);
-                for (double d1 : diameters()) {
-                    for (double d2 : diameters()) {
+                for (double d1 : gridDiameters()) {
+                    for (double d2 : gridDiameters()) {
                         const ParticleType a{material.mass(d1)}, b{material.mass(d2)};
                         least = std::min(least, scale * K.majorant(a, b) / K(a, b));
                     }
@@ -147,8 +132,8 @@ TEST(BrownianKernel, MajorantsAreWithinTheirBounds)
                                  ? std::sqrt(2.0)
                                  : (SlipCorrection{}.A1 + SlipCorrection{}.A2) / SlipCorrection{}.A1;
         const BrownianKernel K(r, air(1000.0, 1e5), m);
-        for (double d1 : diameters()) {
-            for (double d2 : diameters()) {
+        for (double d1 : gridDiameters()) {
+            for (double d2 : gridDiameters()) {
                 const ParticleType a{m.mass(d1)}, b{m.mass(d2)};
                 ASSERT_LE(K.majorant(a, b) / K(a, b), bound * (1.0 + 1e-12))
                     << brownianRegimeName(r) << " " << d1 << " " << d2;

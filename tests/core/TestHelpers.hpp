@@ -21,6 +21,97 @@ namespace coagtest {
 
 using namespace coag;
 
+//- Air at T [K] and p [Pa], its viscosity by Sutherland's law
+inline GasState air(double T, double p)
+{
+    GasState g;
+    g.T = T;
+    g.p = p;
+    g.mu = sutherlandViscosity(T);
+    return g;
+}
+
+//- Spheres of the density whose mass unit is one sphere of the diameter (masses in monomers)
+inline ParticleMaterial monomersOf(double density, double diameter)
+{
+    ParticleMaterial m{density};
+    m.massUnit = m.mass(diameter);
+    return m;
+}
+
+//- The diameters of the majorant grids: 1 nm to 100 um, five a decade
+inline std::vector<double> gridDiameters()
+{
+    std::vector<double> d;
+    for (int i = 0; i <= 25; ++i) d.push_back(1e-9 * std::pow(10.0, i / 5.0));
+    return d;
+}
+
+//- The closed cells of the long-time Brownian tests: free-molecular, 10 nm spheres of
+//  1800 kg/m3 in air at 1500 K and 1 bar (the free-molecular kernel is homogeneous, so the size
+//  does not matter), and continuum without slip, 1 um spheres of 1000 kg/m3 in air at 298 K
+//  and 100 bar (Kn = 0.0013, Cunningham factor 1.002 at the start, closer to 1 as they grow).
+//  Masses in the monomer's.
+inline BrownianKernel selfPreservingKernel(BrownianRegime regime)
+{
+    if (regime == BrownianRegime::freeMolecular) {
+        return BrownianKernel(regime, air(1500.0, 1e5), monomersOf(1800.0, 10e-9));
+    }
+    GasState gas;
+    gas.T = 298.15;
+    gas.p = 1e7;
+    gas.mu = 1.8e-5;
+    return BrownianKernel(regime, gas, monomersOf(1000.0, 1e-6));
+}
+
+//- M0..M3 of a discrete distribution, n[l] the number of (l + 1)-mers
+inline std::array<double, 4> discreteMoments(const Eigen::VectorXd& n)
+{
+    std::array<double, 4> m{0, 0, 0, 0};
+    for (Eigen::Index l = 0; l < n.size(); ++l) {
+        double p = 1.0;
+        for (int k = 0; k < 4; ++k) {
+            m[k] += p * n[l];
+            p *= static_cast<double>(l + 1);
+        }
+    }
+    return m;
+}
+
+//- The discrete Smoluchowski reference from N0 monomers at the given times (ascending), a
+//  function of t for expectMomentsMatch: M0..M3 with the sizes truncated at L = 800, checked
+//  against L = 400 (the truncation must change M0..M2 by less than 1e-6, else the test fails)
+inline std::function<std::array<double, 4>(double)>
+discreteReference(const CoagulationKernel& kernel, double N0, const std::vector<double>& times,
+                  const std::string& what)
+{
+    std::vector<std::array<double, 4>> reference[2];
+    for (int level = 0; level < 2; ++level) {
+        const std::size_t L = 400u << level;
+        DiscreteSmoluchowski ode(kernel, L);
+        ode.setTolerances(1e-10, 1e-14 * N0);  // the default absolute tolerance for N0 = 1
+        Eigen::VectorXd n = Eigen::VectorXd::Zero(Eigen::Index(L));
+        n[0] = N0;
+        double t = 0.0;
+        for (double ti : times) {
+            n = ode.integrate(n, t, ti);
+            t = ti;
+            reference[level].push_back(discreteMoments(n));
+        }
+    }
+    for (std::size_t i = 0; i < times.size(); ++i) {
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_NEAR(reference[0][i][k] / reference[1][i][k], 1.0, 1e-6)
+                << what << ": the truncation changes M" << k << " at t = " << times[i];
+        }
+    }
+    return [times, moments = reference[1]](double t) {
+        std::size_t i = 0;
+        while (i + 1 < times.size() && times[i] != t) ++i;
+        return moments[i];
+    };
+}
+
 //- Independent, well-mixed seeds for realisation r of a test.
 inline std::uint64_t seedFor(std::uint64_t base, std::uint64_t r)
 {

@@ -139,12 +139,8 @@ TEST(SectionalSmoluchowski, AdditiveKernelAgainstTheExactMoments)
 //  molecular at 8, 16, 32 sections per doubling) and in the GSD fall with the section width.
 TEST(SectionalSmoluchowski, BrownianAgainstTheDiscreteReference)
 {
-    GasState gas;
-    gas.T = 1500.0;
-    gas.p = 1e5;
-    gas.mu = sutherlandViscosity(gas.T);
-    ParticleMaterial material{1800.0};
-    material.massUnit = material.mass(10e-9);
+    const GasState gas = air(1500.0, 1e5);
+    const ParticleMaterial material = monomersOf(1800.0, 10e-9);
     const std::vector<double> times{0.2, 2.0, 20.0};
     const int L = 600;
     for (BrownianRegime regime : {BrownianRegime::freeMolecular, BrownianRegime::continuum,
@@ -209,19 +205,7 @@ TEST(SectionalSmoluchowski, BrownianAgainstTheDiscreteReference)
 TEST(SectionalSmoluchowski, SelfPreservingAfterAThousandCoagulationTimes)
 {
     for (BrownianRegime regime : {BrownianRegime::freeMolecular, BrownianRegime::continuum}) {
-        GasState gas;
-        ParticleMaterial material{1800.0};
-        if (regime == BrownianRegime::freeMolecular) {
-            gas.T = 1500.0;
-            gas.p = 1e5;
-            gas.mu = sutherlandViscosity(gas.T);
-            material.massUnit = material.mass(10e-9);
-        } else {
-            gas.p = 1e7;
-            material.density = 1000.0;
-            material.massUnit = material.mass(1e-6);
-        }
-        const BrownianKernel kernel(regime, gas, material);
+        const BrownianKernel kernel = selfPreservingKernel(regime);
         const double N0 = 1.0 / kernel(ParticleType{1.0}, ParticleType{1.0});
         double gsd[2] = {0, 0};
         for (unsigned s : {16u, 32u}) {
@@ -254,12 +238,8 @@ TEST(SectionalSmoluchowski, SelfPreservingAfterAThousandCoagulationTimes)
 //        --gtest_filter='SectionalSmoluchowski.DISABLED_GridConvergenceStudy'
 TEST(SectionalSmoluchowski, DISABLED_GridConvergenceStudy)
 {
-    GasState gas;
-    gas.T = 1500.0;
-    gas.p = 1e5;
-    gas.mu = sutherlandViscosity(gas.T);
-    ParticleMaterial material{1800.0};
-    material.massUnit = material.mass(10e-9);
+    const GasState gas = air(1500.0, 1e5);
+    const ParticleMaterial material = monomersOf(1800.0, 10e-9);
     for (BrownianRegime regime : {BrownianRegime::freeMolecular, BrownianRegime::continuum,
                                   BrownianRegime::transition}) {
         const BrownianKernel kernel(regime, gas, material);
@@ -295,10 +275,7 @@ TEST(SectionalSmoluchowski, DISABLED_GridConvergenceStudy)
         }
     }
     // continuum without slip: 1 um at 100 bar
-    gas.T = 298.15; gas.p = 1e7; gas.mu = 1.8e-5;
-    material.massUnit = 1.0;
-    material.massUnit = material.mass(1e-6);
-    const BrownianKernel kc(BrownianRegime::continuum, gas, material);
+    const BrownianKernel kc = selfPreservingKernel(BrownianRegime::continuum);
     for (unsigned s : {8u, 16u, 32u, 64u}) {
         const double N0 = 1.0 / kc(ParticleType{1.0}, ParticleType{1.0});
         SectionalSmoluchowski ref(kc, discreteGeometricGrid(1e6, s));

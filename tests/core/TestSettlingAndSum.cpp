@@ -18,23 +18,6 @@ using namespace coagtest;
 
 namespace {
 
-GasState air(double T, double p)
-{
-    GasState g;
-    g.T = T;
-    g.p = p;
-    g.mu = sutherlandViscosity(T);
-    return g;
-}
-
-//- Diameters from 1 nm to 100 um, five a decade
-std::vector<double> diameters()
-{
-    std::vector<double> d;
-    for (int i = 0; i <= 25; ++i) d.push_back(1e-9 * std::pow(10.0, i / 5.0));
-    return d;
-}
-
 //- The Saffman-Turner kernel 1.3 (eps/nu)^(1/2) (ri + rj)^3 of masses in kg of density rho:
 //  K0 = 1.3 (eps/nu)^(1/2) 3 / (4 pi rho)
 std::shared_ptr<const CoagulationKernel> saffmanTurner(double rho)
@@ -58,8 +41,8 @@ double largestKernelOverMajorant(const Make& make, double& worstGroup)
             for (double rho : {1000.0, 4000.0}) {
                 const ParticleMaterial material{rho};
                 const auto K = make(air(T, p), material);
-                for (double d1 : diameters()) {
-                    for (double d2 : diameters()) {
+                for (double d1 : gridDiameters()) {
+                    for (double d2 : gridDiameters()) {
                         const ParticleType a{material.mass(d1)}, b{material.mass(d2)};
                         const double k = (*K)(a, b);
                         largest = std::max(largest, k / K->majorant(a, b));
@@ -178,7 +161,7 @@ TEST(SumKernel, ValuesAndMajorantsAreThePartsSums)
     EXPECT_TRUE(sum.constantBasis(8));
     EXPECT_TRUE(sum.constantBasis(13));
     EXPECT_FALSE(sum.constantBasis(20));
-    for (double d1 : diameters()) {
+    for (double d1 : gridDiameters()) {
         for (double d2 : {3e-9, 1e-7, 3e-6}) {
             const ParticleType a{m.mass(d1)}, b{m.mass(d2)};
             const double k = (*t1)(a, b) + (*s)(a, b) + (*t2)(a, b);
@@ -276,19 +259,6 @@ TEST(SumKernel, SamplerSumsTheMajorantOverAPopulation)
     }
 }
 
-std::array<double, 4> discreteMoments(const Eigen::VectorXd& n)
-{
-    std::array<double, 4> m{0, 0, 0, 0};
-    for (Eigen::Index l = 0; l < n.size(); ++l) {
-        double p = 1.0;
-        for (int k = 0; k < 4; ++k) {
-            m[k] += p * n[l];
-            p *= static_cast<double>(l + 1);
-        }
-    }
-    return m;
-}
-
 //- Closed cell of 1 um spheres (1500 kg/m3, masses in these monomers) in air at 293 K and
 //  1 atm, Brownian (continuum) coagulation and differential settling together, number density
 //  N0 = 1/K11 (K11 the Brownian one: equal spheres do not settle into each other): SWA and DSA1
@@ -320,9 +290,8 @@ private:
 
 TEST_P(SumReferenceTest, ClosedCellAgainstTheDiscreteReference)
 {
-    GasState gas = air(293.0, 101325.0);
-    ParticleMaterial material{1500.0};
-    material.massUnit = material.mass(1e-6);
+    const GasState gas = air(293.0, 101325.0);
+    const ParticleMaterial material = monomersOf(1500.0, 1e-6);
     const auto brownian = std::make_shared<BrownianKernel>(BrownianRegime::continuum, gas,
                                                            material);
     const auto settles = std::make_shared<GravitationalSettlingKernel>(gas, material);
@@ -331,33 +300,10 @@ TEST_P(SumReferenceTest, ClosedCellAgainstTheDiscreteReference)
     const double N0 = 1.0 / direct(ParticleType{1.0}, ParticleType{1.0});
     const std::vector<double> times{0.2, 1.0, 3.0};
 
-    std::vector<std::array<double, 4>> reference[2];
-    for (int level = 0; level < 2; ++level) {
-        const std::size_t L = 400u << level;
-        DiscreteSmoluchowski ode(direct, L);
-        ode.setTolerances(1e-10, 1e-14 * N0);
-        Eigen::VectorXd n = Eigen::VectorXd::Zero(Eigen::Index(L));
-        n[0] = N0;
-        double t = 0.0;
-        for (double ti : times) {
-            n = ode.integrate(n, t, ti);
-            t = ti;
-            reference[level].push_back(discreteMoments(n));
-        }
-    }
-    for (std::size_t i = 0; i < times.size(); ++i) {
-        for (int k = 0; k < 3; ++k) {
-            EXPECT_NEAR(reference[0][i][k] / reference[1][i][k], 1.0, 1e-6) << " M" << k;
-        }
-    }
+    const auto refAt = discreteReference(direct, N0, times, "Brownian + settling");
 
     const auto res = runEnsemble(GetParam(), kernel, InceptionModel{}, NumberControl{},
                                  [&] { return monodisperse(1000, 1000.0 / N0); }, times, 40, 43);
-    auto refAt = [&](double t) {
-        std::size_t i = 0;
-        while (i + 1 < times.size() && times[i] != t) ++i;
-        return reference[1][i];
-    };
     expectMomentsMatch(res, times, refAt, 3, GetParam() + " Brownian + settling");
 }
 

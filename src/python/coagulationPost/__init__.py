@@ -49,6 +49,8 @@ imports none of them; ``coagulationPost.X`` imports module X on first use:
               against the Lagrangian reference (compare)
   splittingStudy
               main: tables and plot of tests/benchmarks/splittingStudy.sh's runs
+  hotReactor  main: the hot reactor's size distributions and mean diameter on the axis
+              against plugFlowReference's plug flow (tutorials/hotReactor)
 
 Tests: PYTHONPATH=src/python python3 -m pytest tests/python
 """
@@ -72,6 +74,7 @@ __all__ = [
     "coagulationDiffusionColumn",
     "pseudoTurbulencePuff",
     "splittingStudy",
+    "hotReactor",
 ]
 
 

@@ -8,8 +8,6 @@
 
 namespace coag {
 
-namespace {
-
 void requirePositive(const char* who, const char* what, double v)
 {
     if (!(v > 0.0) || !std::isfinite(v)) {
@@ -18,8 +16,6 @@ void requirePositive(const char* who, const char* what, double v)
         throw std::invalid_argument(os.str());
     }
 }
-
-} // namespace
 
 void GasState::check() const
 {

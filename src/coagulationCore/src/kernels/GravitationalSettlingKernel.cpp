@@ -1,10 +1,9 @@
 // coagulationFoam core. Copyright (C) 2025-2026 the coagulationFoam authors
 // SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 #include "coagulation/kernels/GravitationalSettlingKernel.hpp"
+#include "coagulation/kernels/CubeRoot.hpp"
 
 #include <cmath>
-#include <sstream>
-#include <stdexcept>
 
 namespace coag {
 
@@ -13,15 +12,7 @@ namespace {
 // The basis phi_b(m) of the majorant: powers of x = m^(1/3)
 enum Basis { one, x1, x2, x3, x4 };
 
-void requirePositive(const char* what, double v)
-{
-    if (!(v > 0.0) || !std::isfinite(v)) {
-        std::ostringstream os;
-        os << "coag::GravitationalSettlingKernel: " << what
-           << " must be positive and finite, got " << v;
-        throw std::invalid_argument(os.str());
-    }
-}
+constexpr const char* who = "coag::GravitationalSettlingKernel";
 
 } // namespace
 
@@ -32,8 +23,8 @@ GravitationalSettlingKernel::GravitationalSettlingKernel(const GasState& gas,
 {
     gas_.check();
     material_.check();
-    requirePositive("the collision efficiency E", efficiency_);
-    requirePositive("the gravitational acceleration g [m/s2]", g_);
+    requirePositive(who, "the collision efficiency E", efficiency_);
+    requirePositive(who, "the gravitational acceleration g [m/s2]", g_);
     using constants::pi;
     lambda_ = gas_.meanFreePath();
     a_ = material_.diameter(1.0);
@@ -51,21 +42,27 @@ GravitationalSettlingKernel::GravitationalSettlingKernel(const GasState& gas,
 
 double GravitationalSettlingKernel::settlingVelocity(double mass) const
 {
-    const double d = a_ * std::cbrt(mass);
+    return velocityOfDiameter(a_ * cubeRoot(mass));
+}
+
+double GravitationalSettlingKernel::velocityOfDiameter(double d) const
+{
     return cv_ * d * d * slip_(2.0 * lambda_ / d);
 }
 
 double GravitationalSettlingKernel::operator()(const ParticleType& a,
                                                const ParticleType& b) const
 {
-    const double d = a_ * (std::cbrt(a.mass) + std::cbrt(b.mass));
+    // one cube root a particle
+    const double da = a_ * cubeRoot(a.mass), db = a_ * cubeRoot(b.mass);
+    const double d = da + db;
     return efficiency_ * 0.25 * constants::pi * d * d
-           * std::fabs(settlingVelocity(a.mass) - settlingVelocity(b.mass));
+           * std::fabs(velocityOfDiameter(da) - velocityOfDiameter(db));
 }
 
 void GravitationalSettlingKernel::basis(const ParticleType& z, double* phi) const
 {
-    const double x = std::cbrt(z.mass);
+    const double x = cubeRoot(z.mass);
     phi[one] = 1.0;
     phi[x1] = x;
     phi[x2] = x * x;

@@ -8,6 +8,8 @@
 #include "particleMaterial.H"
 #include "caseChecks.H"
 
+#include <cmath>
+
 // * * * * * * * * * * * * * * * * Functions * * * * * * * * * * * * * * * //
 
 coag::ParticleMaterial Foam::coagulation::readParticleMaterial
@@ -54,7 +56,17 @@ Foam::scalar Foam::coagulation::readParticleMass
     }
     const coag::ParticleMaterial material =
         readParticleMaterial(dict.topDict(), model + " (its 'diameter')");
-    return material.mass(caseChecks::positive(dict, "diameter"));
+    const scalar d = caseChecks::positive(dict, "diameter");
+    const scalar mass = material.mass(d);
+    if (!(mass > 0) || !std::isfinite(mass))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'diameter' = " << d << " in " << dict.name()
+            << " makes a particle of mass " << mass << " (in the massUnit "
+            << material.massUnit << " kg), outside the range of numbers"
+            << nl << exit(FatalIOError);
+    }
+    return mass;
 }
 
 

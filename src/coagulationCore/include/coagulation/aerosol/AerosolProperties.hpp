@@ -19,6 +19,9 @@ constexpr double pi = 3.14159265358979323846;
 constexpr double airMolarMass = 0.0289647;      //!< M of dry air [kg/mol]
 } // namespace constants
 
+//- Throws std::invalid_argument "who: what must be positive and finite, got v" unless v is.
+void requirePositive(const char* who, const char* what, double v);
+
 //- The gas at a point: temperature T [K], pressure p [Pa], dynamic viscosity mu [Pa s],
 //  molar mass M [kg/mol]. check() throws std::invalid_argument unless all are positive and
 //  finite.

@@ -9,12 +9,12 @@
 
 namespace coag {
 
-//- x^(1/3) for the particle masses the kernels take:
-//  the exponent divided by three in the bits (Kahan's starting value, good to about 5 bits),
-//  two Halley steps y (y^3 + 2x)/(2 y^3 + x) (each about triples the correct bits) and one
-//  Newton step: within 3 ulp of std::cbrt and half its time (the kernels take cube roots on
-//  every proposed pair). Arguments outside [1e-300, 1e300], zero, infinity and NaN included,
-//  go to std::cbrt.
+//- x^(1/3) for the particle masses the kernels take: the exponent divided by three in the
+//  bits (Kahan's starting value, good to about 5 bits), two Halley steps
+//  y (y^3 + 2x)/(2 y^3 + x) (each about triples the correct bits) and one Newton step: within
+//  3 ulp of std::cbrt, without glibc's frexp and ldexp calls (the kernels take cube roots on
+//  every proposed pair; doc/performance.md). Arguments outside [1e-300, 1e300], zero,
+//  infinity and NaN included, go to std::cbrt.
 inline double cubeRoot(double x)
 {
     if (!(x >= 1e-300 && x <= 1e300)) return std::cbrt(x);  // y^3 must not overflow

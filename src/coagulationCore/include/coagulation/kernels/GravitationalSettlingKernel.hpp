@@ -57,6 +57,9 @@ public:
     double settlingVelocity(double mass) const;
 
 private:
+    //- The settling velocity of a sphere of diameter d [m]
+    double velocityOfDiameter(double d) const;
+
     GasState gas_;
     ParticleMaterial material_;
     SlipCorrection slip_;

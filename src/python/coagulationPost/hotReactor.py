@@ -1,17 +1,17 @@
-#!/usr/bin/env python3
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-"""The hot reactor's plots: coagulationFoam's time-averaged size distributions at the axis
+"""The hot reactor's plots (tutorials/hotReactor): coagulationFoam's time-averaged size distributions at the axis
 probes (sizeDistribution 'psdAxis', postProcessing/psdAxis/<last write>/) against the
 plug-flow solution of plugFlowReference (results/plugFlow.csv, plugFlowSizes.csv).
 
-  plotHotReactor.py --case . --out results [--no-plots]
+  python3 -m coagulationPost.hotReactor --case . --out results [--no-plots]
 
 Writes OUT/axial.csv (each probe: x, the residence time and T of the plug flow, coagulationFoam's
 M0 and count mean diameter d10 with their 95 % intervals, the plug flow's), OUT/psd.png
 (dN/dlog10 d [m^-3] against d [nm] at the probes: coagulationFoam with its 95 % intervals,
 the plug flow binned in the same mass bins) and OUT/meanDiameter.png (d10 along the axis, with
 the axis's temperature). Prints one line a probe. Diameters of spheres of the particles'
-density: d = (6 m massUnit/(pi rho))^(1/3), masses in the case's massUnit.
+density: d = (6 m massUnit/(pi rho))^(1/3), masses in the case's massUnit, both from the
+sample file's attributes (the case's 'particles' entry).
 """
 
 import argparse
@@ -22,7 +22,7 @@ import sys
 
 import numpy as np
 
-from coagulationPost import psd as psdlib
+from . import psd as psdlib
 
 
 def read_rows(path):
@@ -30,15 +30,26 @@ def read_rows(path):
         return list(csv.DictReader(line for line in f if not line.startswith("#")))
 
 
-def foam_value(case, entry):
-    """A scalar of constant/coagulationProperties (a 'particles' entry), by a plain parse."""
-    import re
-    text = open(os.path.join(case, "constant", "coagulationProperties")).read()
-    block = re.search(r"\bparticles\s*\{([^}]*)\}", text).group(1)
-    return float(re.search(r"\b%s\s+([^;\s]+)\s*;" % entry, block).group(1))
+def bin_sizes(masses, numbers, upper):
+    """The numbers of particles of the given masses in the bins of upper edges `upper`: bin
+    b > 0 holds [upper[b-1], upper[b]), bin 0 everything below upper[0]; masses at or above
+    the last edge are dropped."""
+    out = np.zeros(len(upper))
+    idx = np.searchsorted(upper, np.asarray(masses, float), side="right")
+    ok = idx < len(upper)
+    np.add.at(out, idx[ok], np.asarray(numbers, float)[ok])
+    return out
 
 
 def main(argv=None):
+    try:
+        return plots(argv)
+    except (psdlib.InputError, OSError) as e:
+        print("coagulationPost.hotReactor: %s\n%s" % (e, __doc__), file=sys.stderr)
+        return 2
+
+
+def plots(argv):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--case", default=".")
     ap.add_argument("--out", default="results")
@@ -47,20 +58,20 @@ def main(argv=None):
     a = ap.parse_args(argv)
     os.makedirs(a.out, exist_ok=True)
 
-    rho = foam_value(a.case, "density")
-    unit = foam_value(a.case, "massUnit")
+    samples = psdlib.read(a.case, a.name)
+    rho = float(samples["attrs"]["density"])
+    unit = float(samples["attrs"]["massUnit"])
+    if not rho > 0:
+        raise psdlib.InputError("the size distribution '%s' of %s has no particle density: "
+                                "give the case a 'particles' entry" % (a.name, a.case))
 
     def diam_nm(m):
         return 1e9 * (6.0 * np.asarray(m, float) * unit / (math.pi * rho)) ** (1.0 / 3.0)
 
     # coagulationFoam: the solver's averages at the last write time
     rows, derived = psdlib.read_csv(a.case, a.name)
-    folder = os.path.join(a.case, "postProcessing", a.name)
-    last = [d for d in psdlib._time_dirs(folder)
-            if os.path.exists(os.path.join(folder, d, "regions.csv"))][-1]
-    regions = read_rows(os.path.join(folder, last, "regions.csv"))
-    xs = np.array([float(r["x"]) for r in regions])
-    nreg = len(regions)
+    xs = np.asarray(samples["centres"])[:, 0]  # the probes on the axis
+    nreg = len(xs)
     bins = sorted({int(r["bin"]) for r in rows if 0 <= int(r["bin"])})
     nb = len(bins)
     lower = np.zeros(nb)
@@ -92,9 +103,7 @@ def main(argv=None):
     plug_binned = np.zeros((nreg, nb))
     for i, x in enumerate(xs):
         sel = np.isclose(sx, x, atol=1e-9)
-        idx = np.searchsorted(upper, sm[sel], side="right")
-        ok = idx < nb
-        np.add.at(plug_binned[i], idx[ok], sn[sel][ok])
+        plug_binned[i] = bin_sizes(sm[sel], sn[sel], upper)
 
     out_rows = []
     for i, x in enumerate(xs):
