@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 // Kernels with several majorants (groups of terms): the sampler proposes from the group of
-// the least summed rate, and the jump processes stay exact when the choice changes mid-run.
+// the least summed rate when the cell step starts, and the jump processes stay exact when the
+// choice changes from one step to the next.
 #include "TestHelpers.hpp"
 
 using namespace coagtest;
@@ -59,7 +60,9 @@ TEST_P(MajorantGroupsTest, ConstantKernelThroughTwoMajorants)
 {
     const double K0 = 1.0, N0 = 1.0;
     const TwoMajorantsConstantKernel kernel(K0);
-    const std::vector<double> times{1.0, 4.0, 10.0};
+    // cell steps of 0.5 (the group is chosen as each starts), as a solver's steps would be
+    std::vector<double> times;
+    for (int k = 1; k <= 20; ++k) times.push_back(0.5 * k);
     auto exact = [&](double t) { return exact::constantKernelMoments(K0, N0, t); };
     const auto res = runEnsemble(
         GetParam(), kernel, InceptionModel{}, NumberControl{},

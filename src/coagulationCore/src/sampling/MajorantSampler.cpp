@@ -18,7 +18,7 @@ std::size_t MajorantSampler::columnFor(int b, bool weighted, const std::string& 
     col.basis = b;
     col.weighted = weighted;
     col.uniform = !weighted && kernel_->constantBasis(b);
-    col.constant = phi_[static_cast<std::size_t>(b)];
+    col.constant = constantPhi_[static_cast<std::size_t>(b)];
     if (col.uniform && !(col.constant > 0.0 && std::isfinite(col.constant))) {
         throw std::invalid_argument(who + ": kernel '" + kernel_->name()
                                     + "' declares a constant basis function that is not "
@@ -47,16 +47,15 @@ void MajorantSampler::configure(const CoagulationKernel& kernel, const std::stri
     if (nb <= 0) {
         throw std::invalid_argument(who + ": kernel '" + kernel.name() + "' has no basis function");
     }
-    if (static_cast<std::size_t>(nb) > maxBasis || terms.size() > maxTerms) {
+    if (static_cast<std::size_t>(nb) > maxBasis) {
         throw std::invalid_argument(who + ": kernel '" + kernel.name() + "' has "
-                                    + std::to_string(nb) + " basis functions and "
-                                    + std::to_string(terms.size())
-                                    + " majorant terms, at most " + std::to_string(maxBasis)
-                                    + " and " + std::to_string(maxTerms));
+                                    + std::to_string(nb) + " basis functions, at most "
+                                    + std::to_string(maxBasis));
     }
     std::fill_n(phi_, maxBasis, 0.0);
     std::fill_n(phi2_, maxBasis, 0.0);
-    kernel.basis(ParticleType{}, phi_);
+    std::fill_n(constantPhi_, maxBasis, 0.0);
+    kernel.basis(ParticleType{}, constantPhi_);
 
     // The groups in order, each with terms: group g's are [groupBegin_[g], groupBegin_[g + 1])
     nGroups_ = 1;
@@ -78,9 +77,15 @@ void MajorantSampler::configure(const CoagulationKernel& kernel, const std::stri
         }
     }
     groupBegin_[nGroups_] = terms.size();
+    for (std::size_t g = 0; g < nGroups_; ++g) {
+        if (groupBegin_[g + 1] - groupBegin_[g] > maxTerms) {
+            throw std::invalid_argument(who + ": kernel '" + kernel.name() + "' has "
+                                        + std::to_string(groupBegin_[g + 1] - groupBegin_[g])
+                                        + " terms in a majorant, at most "
+                                        + std::to_string(maxTerms));
+        }
+    }
 
-    nColumns_ = 0;
-    nTreeColumns_ = 0;
     std::size_t k = 0;
     for (const MajorantTerm& t : terms) {
         if (t.first < 0 || t.first >= nb || t.second < 0 || t.second >= nb || !(t.coeff > 0.0)
@@ -90,50 +95,60 @@ void MajorantSampler::configure(const CoagulationKernel& kernel, const std::stri
                                           "basis indices in [0, nBasis))");
         }
         allCoeff_[k] = t.coeff;
-        allFirst_[k] = columnFor(t.first, false, who);
-        allSecond_[k] = columnFor(t.second, weightedSecond_, who);
+        allFirst_[k] = t.first;
+        allSecond_[k] = t.second;
         ++k;
     }
-    activate(0);
-    std::fill_n(termRate_, maxTerms, 0.0);
-    // No term (K = 0): rateSum() is zero and no pair is ever proposed
-    lastTerm_ = nTerms_ > 0 ? nTerms_ - 1 : 0;
+    // Every group's columns checked now, not at the build that would first choose it
+    for (std::size_t g = nGroups_; g-- > 0;) useGroup(g, who);
     std::fill_n(leaf_, QuantizedSumTree::maxColumns, 0.0);
     std::fill_n(columnTotals_, QuantizedSumTree::maxColumns, 0.0);
 }
 
-void MajorantSampler::activate(std::size_t g)
+void MajorantSampler::useGroup(std::size_t g, const std::string& who)
 {
     activeGroup_ = g;
+    nColumns_ = 0;
+    nTreeColumns_ = 0;
     nTerms_ = groupBegin_[g + 1] - groupBegin_[g];
-    std::copy_n(allCoeff_ + groupBegin_[g], nTerms_, termCoeff_);
-    std::copy_n(allFirst_ + groupBegin_[g], nTerms_, termFirst_);
-    std::copy_n(allSecond_ + groupBegin_[g], nTerms_, termSecond_);
+    for (std::size_t k = 0; k < nTerms_; ++k) {
+        const std::size_t t = groupBegin_[g] + k;
+        termCoeff_[k] = allCoeff_[t];
+        termFirst_[k] = columnFor(allFirst_[t], false, who);
+        termSecond_[k] = columnFor(allSecond_[t], weightedSecond_, who);
+    }
+    std::fill_n(termRate_, maxTerms, 0.0);
+    // No term (K = 0): rateSum() is zero and no pair is ever proposed
+    lastTerm_ = nTerms_ > 0 ? nTerms_ - 1 : 0;
 }
 
-double MajorantSampler::leastGroupRateSum(std::size_t n)
+void MajorantSampler::chooseGroup(const Particle* particles, std::size_t n)
 {
+    // sum_j phi_b(z_j) and sum_j phi_b(z_j) w_j for every basis function, in one pass
+    double first[maxBasis] = {}, second[maxBasis] = {};
+    const std::size_t nb = static_cast<std::size_t>(kernel_->nBasis());
+    for (std::size_t j = 0; j < n; ++j) {
+        kernel_->basis(particles[j].type, phi2_);
+        const double w = weightedSecond_ ? particles[j].weight : 1.0;
+        for (std::size_t b = 0; b < nb; ++b) {
+            first[b] += phi2_[b];
+            second[b] += phi2_[b] * w;
+        }
+    }
     double least = 0.0;
     std::size_t best = 0;
     for (std::size_t g = 0; g < nGroups_; ++g) {
         double sum = 0.0;
-        for (std::size_t k = groupBegin_[g]; k < groupBegin_[g + 1]; ++k) {
-            allRate_[k] = allCoeff_[k] * columnTotal(columns_[allFirst_[k]], n)
-                          * columnTotal(columns_[allSecond_[k]], n);
-            sum += allRate_[k];
+        for (std::size_t t = groupBegin_[g]; t < groupBegin_[g + 1]; ++t) {
+            sum += allCoeff_[t] * first[allFirst_[t]] * second[allSecond_[t]];
         }
         if (g == 0 || sum < least) {
             least = sum;
             best = g;
         }
     }
-    if (best != activeGroup_) activate(best);
-    lastTerm_ = 0;
-    for (std::size_t k = 0; k < nTerms_; ++k) {
-        termRate_[k] = allRate_[groupBegin_[best] + k];
-        if (termRate_[k] > 0.0) lastTerm_ = k;
-    }
-    return least;
+    // The columns were checked by configure(): no throw here
+    if (best != activeGroup_) useGroup(best, std::string());
 }
 
 } // namespace coag

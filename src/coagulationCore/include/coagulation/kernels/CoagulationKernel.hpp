@@ -27,8 +27,9 @@ struct MajorantTerm {
 //  without terms is K = 0 (NoCoagulationKernel).
 //  A kernel may give several majorants, each a group of terms (groups 0, 1, ..., their terms
 //  listed in that order), each >= K on its own: the sampler proposes from the one whose sum
-//  over the population is the least at the time (as MOpS chooses between its free-molecular
-//  and slip-flow majorants), so the fictitious jumps are those of the tighter one.
+//  over the population is the least when the cell step starts (as MOpS chooses between its
+//  free-molecular and slip-flow majorants), so the fictitious jumps are those of the tighter
+//  one, and the sampler's tree holds that group's columns only.
 class CoagulationKernel {
 public:
     virtual ~CoagulationKernel() = default;

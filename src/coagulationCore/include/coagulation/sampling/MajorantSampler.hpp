@@ -47,7 +47,8 @@ class MajorantSampler {
 public:
     //- The most basis functions and majorant terms of a kernel that configure() takes
     static constexpr std::size_t maxBasis = 16;
-    static constexpr std::size_t maxTerms = 16;
+    static constexpr std::size_t maxTerms = 16;  // a majorant group's terms
+    static constexpr std::size_t maxGroups = 4;
 
     explicit MajorantSampler(bool weightedSecond) : weightedSecond_(weightedSecond) {}
 
@@ -59,7 +60,9 @@ public:
 
     const CoagulationKernel& kernel() const { return *kernel_; }
 
-    //- All leaves from the particles, room for `capacity` (O(N)).
+    //- All leaves from the particles, room for `capacity` (O(N)). A kernel of several
+    //  majorant groups first has the group of the least summed majorant over the particles
+    //  chosen: its columns alone are the tree's until the next build.
     template <class Allocator>
     void build(const std::vector<Particle, Allocator>& particles, std::size_t capacity)
     {
@@ -71,6 +74,7 @@ public:
         if (capacity < n) capacity = n;
         ahead_.valid = false;
         partial_.valid = false;
+        if (nGroups_ > 1) chooseGroup(particles, n);
         if (nTreeColumns_ == 0) {
             tree_.reset(0, capacity);
             return;
@@ -105,8 +109,7 @@ public:
 
     //- sum_t coeff_t S_first,t S_second,t over n >= 2 particles (0 for fewer); keeps the
     //  per-term rates and the column totals for propose() (so call it after every change).
-    //  With several majorant groups: the least group's sum, and that group's terms are the
-    //  ones propose() and the pair rates use until the next call.
+    //  With several majorant groups: the sum of the group chosen at the last build().
     double rateSum(std::size_t n)
     {
         double sum = 0.0;
@@ -114,7 +117,6 @@ public:
             for (std::size_t c = 0; c < nTreeColumns_; ++c) {
                 columnTotals_[c] = tree_.total(c);
             }
-            if (nGroups_ > 1) return leastGroupRateSum(n);
             lastTerm_ = 0;
             for (std::size_t k = 0; k < nTerms_; ++k) {
                 termRate_[k] = termCoeff_[k] * columnTotal(columns_[termFirst_[k]], n)
@@ -305,12 +307,13 @@ private:
         }
     }
 
-    //- rateSum() of several groups: every group's sum from the all* arrays; the least one's
-    //  terms made the active ones (termCoeff_ ...) and its rates termRate_
-    double leastGroupRateSum(std::size_t n);
+    //- The terms of group g made the active ones (termCoeff_ ...), with their columns (a
+    //  group of more columns than the tree holds throws std::invalid_argument naming `who`)
+    void useGroup(std::size_t g, const std::string& who);
 
-    //- The terms of group g made the active ones
-    void activate(std::size_t g);
+    //- Several groups: the one of the least summed majorant over the n particles made the
+    //  active one (one pass over the basis functions, before the tree is built)
+    void chooseGroup(const Particle* particles, std::size_t n);
 
     //- The term of a proposal at u in [0, rateSum): u past the others' rates (round-off) gives
     //  the last positive one
@@ -434,17 +437,16 @@ private:
     double phi_[maxBasis] = {};
     double phi2_[maxBasis] = {};
     std::size_t lastTerm_ = 0;       // rateSum(): the last term with a positive rate
-    //- Several majorant groups: all their terms (group g's are [groupBegin_[g],
-    //  groupBegin_[g + 1])), the group whose terms are the active ones above, and the
-    //  per-term rates of the last rateSum(). One group: the active terms are all the terms.
-    static constexpr std::size_t maxGroups = 4;
+    //- All the majorant groups' terms (group g's are [groupBegin_[g], groupBegin_[g + 1]),
+    //  with their basis functions), and the group whose terms and columns are the active
+    //  ones above. One group: the active terms are all the terms.
     std::size_t nGroups_ = 1;
     std::size_t groupBegin_[maxGroups + 1] = {};
     std::size_t activeGroup_ = 0;
-    double allCoeff_[maxTerms] = {};
-    std::size_t allFirst_[maxTerms] = {};
-    std::size_t allSecond_[maxTerms] = {};
-    double allRate_[maxTerms] = {};
+    double allCoeff_[maxGroups * maxTerms] = {};
+    int allFirst_[maxGroups * maxTerms] = {};
+    int allSecond_[maxGroups * maxTerms] = {};
+    double constantPhi_[maxBasis] = {};  // the basis at a default particle: the constant ones
     //- lookAhead()'s (or finishLookAhead()'s) draws for the next proposeAhead(): its term and
     //  the tree columns' walks to their blocks
     struct Ahead {
