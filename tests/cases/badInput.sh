@@ -179,7 +179,7 @@ expectFatal sumNoKernels       "'kernels'"        -entry kernel -set "{ type sum
 expectFatal sumUnknownPart     "stokes"           -entry kernel -set "{ type sum; kernels { a { $brownian } b { type stokes; } } }"
 expectFatal sumPartTwice       "both of type Brownian" -entry kernel -set "{ type sum; kernels { a { $brownian } b { $brownian } } }"
 expectFatal sumPartTypo        "g0"               -entry kernel -set "{ type sum; kernels { s { $settling g0 9.81; } } }"
-expectFatal sumTooLarge        "does not fit algorithm SWA" -entry kernel -set "{ type sum; kernels { a { $brownian } b { $settling } } }"
+expectFatal sumTooLarge        "does not fit algorithm SWA.*sampler columns" -entry kernel -set "{ type sum; kernels { a { $brownian } b { $settling } c { type additive; K0 1e-20; } } }"
 expectFatal particlesDensity   "'density' = -1"   -entry particles/density -set -1
 expectFatal particlesTypo      "densty"           -entry particles -set "{ densty 1800; }"
 expectFatal inflowDiameter     "'diameter' = -1"  -entry inflow -set "{ patches (inlet); density 1e9; diameter -1; }"

@@ -422,16 +422,16 @@ print("ok brownian: %d real jumps, %.3f fictitious per real one" % (real, ratio)
 PY
 fi
 
-# 19b. Brownian (continuum) coagulation and differential settling as one kernel, a sum, on
-#     the same population: runs with coagulation events; the sum's layout is 13 basis
-#     functions and 16 terms in one group, which SWA's sampler holds
+# 19b. Brownian (transition) coagulation and differential settling as one kernel, a sum, on
+#     the same population: runs with coagulation events; the sum's layout is 12 basis
+#     functions and 26 terms in two groups of 16 columns at most, which SWA's sampler holds
 if want brownianSettling; then
     c=$(copyCase brownianSettling)
     gas="T 1500; p 1e5;"
-    setEntry "$c" constant/coagulationProperties kernel "{ type sum; kernels { brownian { type Brownian; regime continuum; $gas } settling { type gravitationalSettling; collisionEfficiency 0.8; $gas } } }"
+    setEntry "$c" constant/coagulationProperties kernel "{ type sum; kernels { brownian { type Brownian; regime transition; $gas } settling { type gravitationalSettling; collisionEfficiency 0.8; $gas } } }"
     aerosolPopulation "$c"
     expectRun "$c"
-    grep -q "sum of 2 kernels: 13 basis functions, 16 majorant terms in 1 groups" "$c/log" \
+    grep -q "sum of 2 kernels: 12 basis functions, 26 majorant terms in 2 groups" "$c/log" \
         || fail "brownianSettling: no sum line"
     grep -q "collision efficiency 0.8" "$c/log" || fail "brownianSettling: no settling line"
     awk '/coagulation events/ { n = $4 } END { exit !(n > 0) }' "$c/log" \

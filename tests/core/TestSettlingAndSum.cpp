@@ -152,15 +152,15 @@ TEST(SumKernel, ValuesAndMajorantsAreThePartsSums)
     auto s = std::make_shared<GravitationalSettlingKernel>(gas, m, 0.7, 20.0);
     const SumKernel sum({t1, s, t2});
     EXPECT_EQ(sum.name(), "sum");
-    EXPECT_EQ(sum.nBasis(), 8 + 5 + 8);
+    EXPECT_EQ(sum.nBasis(), 7 + 5 + 7);
     EXPECT_EQ(sum.nMajorantGroups(), 4);
-    // the four combinations: t1 (6 or 7 terms), s (9), t2 (6 or 7)
-    EXPECT_EQ(sum.majorantTerms().size(), std::size_t(2 * 13 + 4 * 9 + 2 * 13));
+    // the four combinations: t1 (4 or 4 terms), s (9), t2 (4 or 4)
+    EXPECT_EQ(sum.majorantTerms().size(), std::size_t(2 * 8 + 4 * 9 + 2 * 8));
     EXPECT_TRUE(sum.constantBasis(0));
     EXPECT_FALSE(sum.constantBasis(1));
-    EXPECT_TRUE(sum.constantBasis(8));
-    EXPECT_TRUE(sum.constantBasis(13));
-    EXPECT_FALSE(sum.constantBasis(20));
+    EXPECT_TRUE(sum.constantBasis(7));
+    EXPECT_TRUE(sum.constantBasis(12));
+    EXPECT_FALSE(sum.constantBasis(18));
     for (double d1 : gridDiameters()) {
         for (double d2 : {3e-9, 1e-7, 3e-6}) {
             const ParticleType a{m.mass(d1)}, b{m.mass(d2)};
@@ -187,8 +187,12 @@ TEST(SumKernel, RefusesNoPartAndNullParts)
 }
 
 //- The sampler's limits: the sum of the Brownian transition kernel, settling and
-//  Saffman-Turner has 39 terms (two groups), more than MajorantSampler::maxTerms; the sampler
-//  refuses it naming the kernel and the limits
+//  Saffman-Turner has 17 terms in its first majorant group, more than
+//  MajorantSampler::maxTerms; the free-molecular kernel, settling and the additive kernel have
+//  14 basis functions and 15 terms but 19 columns under SWA, more than
+//  QuantizedSumTree::maxColumns. The sampler refuses both, naming the kernel
+//  and the limit. The Brownian kernels with settling fit, each group on its own: 13 terms and
+//  16 columns at most.
 TEST(SumKernel, SamplerRefusesASumBeyondItsLimits)
 {
     const auto K = brownianSettlingTurbulence(air(300.0, 1e5), ParticleMaterial{1000.0});
@@ -202,20 +206,21 @@ TEST(SumKernel, SamplerRefusesASumBeyondItsLimits)
         EXPECT_NE(what.find("'sum'"), std::string::npos) << what;
         EXPECT_NE(what.find("at most"), std::string::npos) << what;
     }
-    // Brownian free-molecular plus settling: 15 terms, 13 basis functions, which DSA's
-    // unweighted columns hold, but SWA stores 20 columns (a weighted one of each second
-    // factor), more than QuantizedSumTree::maxColumns
     const GasState gas = air(300.0, 1e5);
     const ParticleMaterial m{1000.0};
-    const SumKernel fm({std::make_shared<BrownianKernel>(BrownianRegime::freeMolecular, gas, m),
-                        settling(gas, m)});
+    auto fm = std::make_shared<BrownianKernel>(BrownianRegime::freeMolecular, gas, m);
+    const SumKernel tooWide({fm, settling(gas, m), std::make_shared<AdditiveKernel>(1e-20)});
     MajorantSampler dsa(false), swa(true);
-    EXPECT_NO_THROW(dsa.configure(fm, "test"));
+    EXPECT_NO_THROW(dsa.configure(tooWide, "test"));
     try {
-        swa.configure(fm, "test");
+        swa.configure(tooWide, "test");
         FAIL() << "configured";
     } catch (const std::invalid_argument& e) {
         EXPECT_NE(std::string(e.what()).find("sampler columns"), std::string::npos) << e.what();
+    }
+    for (BrownianRegime r : {BrownianRegime::freeMolecular, BrownianRegime::transition}) {
+        const SumKernel fits({std::make_shared<BrownianKernel>(r, gas, m), settling(gas, m)});
+        EXPECT_NO_THROW(swa.configure(fits, "test")) << brownianRegimeName(r);
     }
 }
 

@@ -10,8 +10,9 @@ namespace coag {
 
 namespace {
 
-// The basis phi_b(m) of the majorants (BrownianKernel.hpp)
-enum Basis { one, third, twoThirds, sixth, minusSixth, minusHalf, minusThird, minusTwoThirds };
+// The basis phi_b(m) of the majorants (BrownianKernel.hpp), x = m^(1/3): 1, x, x^2, x^(1/2),
+// x^(-3/2), the slip bound s = 1 + b/x and s/x
+enum Basis { one, third, twoThirds, sixth, minusHalf, slip, slipOverX };
 
 } // namespace
 
@@ -51,21 +52,15 @@ BrownianKernel::BrownianKernel(BrownianRegime regime, const GasState& gas,
     freeMolecular1_ = 0.25 * pi * a_ * a_ * speed1_;
     continuum1_ = 2.0 * kT_ / (3.0 * gas_.mu);
 
-    // (2kT/3mu)(1/di + Abar/di^2 + 1/dj + Abar/dj^2)(di + dj), d = a x, x = m^(1/3)
+    // (2kT/3mu)(si/xi + sj/xj)(xi + xj), d = a x, x = m^(1/3), s = 1 + b/x >= C
     const double cc = continuum1_;
-    // C <= slip.bound(Kn) = 1 + (A1 + A2) 2 lambda / d
-    const double b = 2.0 * lambda_ * (slip_.A1 + slip_.A2) / a_;
+    slipBound1_ = 2.0 * lambda_ * (slip_.A1 + slip_.A2) / a_;
     const std::vector<MajorantTerm> continuumTerms{
-        {2.0 * cc, one, one},
-        {cc, minusThird, third},          {cc, third, minusThird},
-        {cc * b, minusThird, one},        {cc * b, one, minusThird},
-        {cc * b, minusTwoThirds, third},  {cc * b, third, minusTwoThirds}};
-    // cfm (xi + xj)^2 (mi^(-1/2) + mj^(-1/2)), cfm = (pi/4) a^2 sqrt(8kT/pi)
-    const double cf = freeMolecular1_;
+        {cc, slip, one},  {cc, one, slip},  {cc, slipOverX, third},  {cc, third, slipOverX}};
+    // freeMolecularFactor (xi^2 + xj^2)(mi^(-1/2) + mj^(-1/2)) (pi/4) a^2 sqrt(8kT/pi)
+    const double cf = freeMolecularFactor * freeMolecular1_;
     const std::vector<MajorantTerm> freeMolecularTerms{
-        {cf, sixth, one},                 {cf, one, sixth},
-        {cf, twoThirds, minusHalf},       {cf, minusHalf, twoThirds},
-        {2.0 * cf, minusSixth, third},    {2.0 * cf, third, minusSixth}};
+        {cf, sixth, one},  {cf, one, sixth},  {cf, twoThirds, minusHalf},  {cf, minusHalf, twoThirds}};
 
     switch (regime_) {
     case BrownianRegime::freeMolecular: terms_ = freeMolecularTerms; break;
@@ -140,15 +135,15 @@ double BrownianKernel::operator()(const ParticleType& a, const ParticleType& b) 
 void BrownianKernel::basis(const ParticleType& z, double* phi) const
 {
     const double x = cubeRoot(z.mass);
-    const double s = std::sqrt(x);
+    const double r = std::sqrt(x);
+    const double s = 1.0 + slipBound1_ / x;
     phi[one] = 1.0;
     phi[third] = x;
     phi[twoThirds] = x * x;
-    phi[sixth] = s;
-    phi[minusSixth] = 1.0 / s;
-    phi[minusHalf] = 1.0 / (s * x);
-    phi[minusThird] = 1.0 / x;
-    phi[minusTwoThirds] = 1.0 / (x * x);
+    phi[sixth] = r;
+    phi[minusHalf] = 1.0 / (r * x);
+    phi[slip] = s;
+    phi[slipOverX] = s / x;
 }
 
 } // namespace coag

@@ -34,17 +34,19 @@ BrownianRegime parseBrownianRegime(const std::string& name);
 //  Atmospheric Modeling, 2nd ed., eq. 15.33). The transition kernel tends to the
 //  free-molecular one as Kn -> infinity and to the slip-corrected continuum one as Kn -> 0.
 //
-//  Product-sum majorants in the mass m (d = a m^(1/3), a = (6 massUnit/(pi rho))^(1/3)):
-//    freeMolecular  sqrt(1/mi + 1/mj) <= mi^(-1/2) + mj^(-1/2), so
-//                   Khat = cfm (xi + xj)^2 (mi^(-1/2) + mj^(-1/2)), x = m^(1/3), six terms;
-//                   Khat / K <= sqrt(2), equal at very unequal masses.
-//    continuum      C <= 1 + Abar/d with Abar = 2 lambda (A1 + A2) (SlipCorrection), so
-//                   Khat = (2kT/3mu)(1/di + Abar/di^2 + 1/dj + Abar/dj^2)(di + dj), seven
-//                   terms; Khat / K <= (A1 + A2)/A1 = 1.32.
+//  Product-sum majorants in the mass m (d = a m^(1/3), a = (6 massUnit/(pi rho))^(1/3)),
+//  four terms each (seven sampler columns under SWA):
+//    freeMolecular  (xi + xj)^2 sqrt(1/mi + 1/mj) <= f (xi^2 + xj^2)(mi^(-1/2) + mj^(-1/2))
+//                   with x = m^(1/3) and f = freeMolecularFactor: the ratio of the two
+//                   depends on t = xj/xi alone, and f is above the largest
+//                   (1 + t)^2 sqrt(1 + t^-3) / ((1 + t^2)(1 + t^(-3/2))) = 1.41779 (at
+//                   t = 1.52), so Khat / K lies between 1.0016 and f = 1.42.
+//    continuum      C <= s = 1 + Abar/d with Abar = 2 lambda (A1 + A2) (SlipCorrection), so
+//                   Khat = (2kT/3mu)(si/di + sj/dj)(di + dj); Khat / K <= (A1 + A2)/A1 = 1.32.
 //    transition     two majorants, as two groups: the free-molecular one (K is below the
 //                   free-molecular K, F exceeding its second term) and the continuum one
 //                   times transitionContinuumMargin; the sampler proposes from the one
-//                   whose sum over the population is the lesser at the time.
+//                   whose sum over the population is the lesser when the cell step starts.
 class BrownianKernel : public CoagulationKernel {
 public:
     //- The continuum majorant's factor in the transition regime: Fuchs' kernel exceeds the
@@ -53,12 +55,15 @@ public:
     //  100 bar and densities 500 to 20000 kg/m3 is 1.0138), which the factor covers
     static constexpr double transitionContinuumMargin = 1.02;
 
+    //- The free-molecular majorant's factor f (above): 1.42 >= 1.41779, the largest ratio
+    static constexpr double freeMolecularFactor = 1.42;
+
     //- Throws std::invalid_argument for a gas or material that is not positive and finite.
     BrownianKernel(BrownianRegime regime, const GasState& gas, const ParticleMaterial& material);
 
     std::string name() const override { return "Brownian"; }
     double operator()(const ParticleType& a, const ParticleType& b) const override;
-    int nBasis() const override { return 8; }
+    int nBasis() const override { return 7; }
     void basis(const ParticleType& z, double* phi) const override;
     const std::vector<MajorantTerm>& majorantTerms() const override { return terms_; }
     bool constantBasis(int b) const override { return b == 0; }
@@ -90,6 +95,7 @@ private:
     // The single-particle quantities at unit mass: c = speed1 m^(-1/2), Kn = knudsen1 m^(-1/3),
     // D = diffusivity1 C m^(-1/3); the kernels' factors (pi/4) a^2 speed1 and 2kT/(3 mu)
     double speed1_, knudsen1_, diffusivity1_, freeMolecular1_, continuum1_;
+    double slipBound1_;  //!< the slip bound s = 1 + slipBound1 m^(-1/3)
     std::vector<MajorantTerm> terms_;
 };
 
