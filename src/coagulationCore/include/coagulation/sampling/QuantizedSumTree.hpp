@@ -264,6 +264,14 @@ private:
         case 2: f(std::integral_constant<std::size_t, 2>()); break;
         case 3: f(std::integral_constant<std::size_t, 3>()); break;
         case 4: f(std::integral_constant<std::size_t, 4>()); break;
+        case 5: f(std::integral_constant<std::size_t, 5>()); break;
+        case 6: f(std::integral_constant<std::size_t, 6>()); break;
+        case 7: f(std::integral_constant<std::size_t, 7>()); break;
+        case 8: f(std::integral_constant<std::size_t, 8>()); break;
+        case 9: f(std::integral_constant<std::size_t, 9>()); break;
+        case 10: f(std::integral_constant<std::size_t, 10>()); break;
+        case 11: f(std::integral_constant<std::size_t, 11>()); break;
+        case 12: f(std::integral_constant<std::size_t, 12>()); break;
         default: f(std::integral_constant<std::size_t, 0>());
         }
     }
