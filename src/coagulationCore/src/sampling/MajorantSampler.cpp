@@ -124,10 +124,14 @@ void MajorantSampler::useGroup(std::size_t g, const std::string& who)
 
 void MajorantSampler::chooseGroup(const Particle* particles, std::size_t n)
 {
-    // sum_j phi_b(z_j) and sum_j phi_b(z_j) w_j for every basis function, in one pass
+    // sum_j phi_b(z_j) and sum_j phi_b(z_j) w_j for every basis function over at most
+    // chooseSample particles evenly spaced in the store: every group is a majorant, so any
+    // choice is exact, and a sample of the population chooses as well as all of it at a
+    // bounded cost a step
     double first[maxBasis] = {}, second[maxBasis] = {};
     const std::size_t nb = static_cast<std::size_t>(kernel_->nBasis());
-    for (std::size_t j = 0; j < n; ++j) {
+    const std::size_t stride = n > chooseSample ? n / chooseSample : 1;
+    for (std::size_t j = 0; j < n; j += stride) {
         kernel_->basis(particles[j].type, phi2_);
         const double w = weightedSecond_ ? particles[j].weight : 1.0;
         for (std::size_t b = 0; b < nb; ++b) {

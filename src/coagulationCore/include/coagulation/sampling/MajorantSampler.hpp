@@ -311,9 +311,10 @@ private:
     //  group of more columns than the tree holds throws std::invalid_argument naming `who`)
     void useGroup(std::size_t g, const std::string& who);
 
-    //- Several groups: the one of the least summed majorant over the n particles made the
-    //  active one (one pass over the basis functions, before the tree is built)
+    //- Several groups: the one of the least summed majorant over the n particles (a sample
+    //  of chooseSample of them at most) made the active one, before the tree is built
     void chooseGroup(const Particle* particles, std::size_t n);
+    static constexpr std::size_t chooseSample = 256;
 
     //- The term of a proposal at u in [0, rateSum): u past the others' rates (round-off) gives
     //  the last positive one
