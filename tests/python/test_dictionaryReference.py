@@ -130,6 +130,9 @@ SECTIONS = {
         [("cloudFunctions/<name>", "cellWork")],
     ("applications/utilities/workDecomposition/workDecomposition.C", "main", 0):
         [("decomposeParDict/workDecompositionCoeffs", None)],
+    (MODELS + "functionObjects/coagulationCloudFunctionObject/coagulationCloudFunctionObject.C",
+     "read", 0):
+        [("controlDict/functions/<name>", "coagulationCloud")],
 }
 
 # Read sites, (file, the dictionary's variable) -> section: dictionaries no keyword check covers
@@ -168,6 +171,8 @@ SELECTION_TABLES = {
 
 # Model headers whose Usage block (\table ... \endtable) lists exactly these sections' entries
 HEADER_SECTIONS = {
+    MODELS + "functionObjects/coagulationCloudFunctionObject/coagulationCloudFunctionObject.H":
+        [("controlDict/functions/<name>", "coagulationCloud")],
     MODELS + "clouds/coagulationCloud/coagulationCloud.H":
         [("coagulationProperties", None), ("numberControl", None)],
     MODELS + "clouds/statisticalScaling/statisticalScaling.H":

@@ -57,12 +57,14 @@ Foam::coagulation::coagulationCloud::readNumberControl() const
 Foam::coagulation::coagulationCloud::coagulationCloud
 (
     const volVectorField& U,
-    const word& cloudName
+    const word& cloudName,
+    const bool liveFlow
 )
 :
     Cloud<coagulationParticle>(U.mesh(), cloudName, false),
     mesh_(U.mesh()),
     U_(U),
+    liveFlow_(liveFlow),
     properties_
     (
         IOobject
@@ -256,8 +258,12 @@ Foam::coagulation::coagulationCloud::coagulationCloud
 
     // The fields read (U, the submodels'): the cloud writes them, with all
     // their digits, so that a restart reads the flow and the sources exactly
-    takeInputFields<volScalarField>();
-    takeInputFields<volVectorField>();
+    // (in a flow solver, the solver writes its own fields)
+    if (!liveFlow_)
+    {
+        takeInputFields<volScalarField>();
+        takeInputFields<volVectorField>();
+    }
 
     Info<< "Coagulation cloud " << cloudName << ": "
         << returnReduce(this->size(), sumOp<label>())

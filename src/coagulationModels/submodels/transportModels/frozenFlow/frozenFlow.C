@@ -397,9 +397,17 @@ void Foam::coagulation::transportModels::frozenFlow::move
     cloud_.index().invalidateSort();
     if (scheme_ != "cell")
     {
-        if (!UInterp_ || &UInterp_->psi() != &U)
+        // A live flow's interpolation (its point values) made anew for
+        // each time step's U
+        const label timeIndex = U.time().timeIndex();
+        if
+        (
+            !UInterp_ || &UInterp_->psi() != &U
+         || (cloud_.liveFlow() && UInterpTimeIndex_ != timeIndex)
+        )
         {
             UInterp_ = interpolation<vector>::New(scheme_, U);
+            UInterpTimeIndex_ = timeIndex;
         }
         td.setInterpolation(UInterp_.get(), maxCo_, &cellLength_);
     }

@@ -1,0 +1,180 @@
+/*---------------------------------------------------------------------------*\
+  coagulationFoam: weighted stochastic particles coupled to OpenFOAM
+  Copyright (C) 2025-2026 the coagulationFoam authors
+  SPDX-License-Identifier: GPL-3.0-or-later (see COPYING); links OpenFOAM,
+  which is GPL-3.0-or-later too
+\*---------------------------------------------------------------------------*/
+
+#include "coagulationCloudFunctionObject.H"
+#include "caseChecks.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace coagulation
+{
+    defineTypeNameAndDebug(coagulationCloudFunctionObject, 0);
+
+    addToRunTimeSelectionTable
+    (
+        functionObject,
+        coagulationCloudFunctionObject,
+        dictionary
+    );
+}
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::coagulation::coagulationCloudFunctionObject::checkTransient
+(
+    const dictionary& dict
+) const
+{
+    const dictionary& ddt = mesh_.schemesDict().subDict("ddtSchemes");
+    const word UName = dict.getOrDefault<word>("U", "U");
+    for (const word& key : {word("ddt(" + UName + ")"), word("default")})
+    {
+        if (ddt.found(key))
+        {
+            const word scheme(ddt.lookup(key));
+            if (scheme == "steadyState")
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Function object " << name() << " (type "
+                    << typeName << ") in " << dict.name() << " needs a"
+                    << " transient flow solver, but ddtSchemes/" << key
+                    << " is steadyState in " << mesh_.schemesDict().name()
+                    << ": a steady solver's iterations are not time steps."
+                    << nl << "    Run coagulationFoam on the converged flow"
+                    << " instead" << nl << exit(FatalIOError);
+            }
+            return;
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::coagulation::coagulationCloudFunctionObject::
+coagulationCloudFunctionObject
+(
+    const word& name,
+    const Time& runTime,
+    const dictionary& dict
+)
+:
+    functionObjects::fvMeshFunctionObject(name, runTime, dict),
+    cloud_(),
+    cloudObjects_()
+{
+    read(dict);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::coagulation::coagulationCloudFunctionObject::read
+(
+    const dictionary& dict
+)
+{
+    fvMeshFunctionObject::read(dict);
+    caseChecks::keywords
+    (
+        dict,
+        {
+            "type", "libs", "U", "region", "enabled", "log", "timeStart",
+            "timeEnd", "executeControl", "executeInterval", "writeControl",
+            "writeInterval"
+        }
+    );
+    if (cloud_)
+    {
+        return true;
+    }
+    checkTransient(dict);
+
+    const word UName = dict.getOrDefault<word>("U", "U");
+    if (!mesh_.foundObject<volVectorField>(UName))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Function object " << name() << " (type " << typeName
+            << ") in " << dict.name() << " moves particles with the"
+            << " velocity '" << UName << "' (entry 'U'), but the solver has"
+            << " no volVectorField of that name; it has "
+            << mesh_.sortedNames<volVectorField>() << nl
+            << exit(FatalIOError);
+    }
+
+    // The objects the cloud registers with the mesh: those written with
+    // the time are written again once the step is made
+    const wordList before(mesh_.objectRegistry::sortedToc());
+    cloud_.reset
+    (
+        new coagulationCloud
+        (
+            mesh_.lookupObject<volVectorField>(UName),
+            "coagulationCloud",
+            true
+        )
+    );
+    const wordHashSet old(before);
+    for (const word& objName : mesh_.objectRegistry::sortedToc())
+    {
+        if (!old.found(objName))
+        {
+            cloudObjects_.append(objName);
+        }
+    }
+    return true;
+}
+
+
+bool Foam::coagulation::coagulationCloudFunctionObject::execute()
+{
+    coagulationCloud& cloud = *cloud_;
+    cloud.completeWrite();
+    cloud.evolve();
+    Log << type() << " " << name() << ": time " << time_.timeName()
+        << ", particles = " << returnReduce(cloud.size(), sumOp<label>())
+        << endl;
+
+    if (time_.writeTime())
+    {
+        for (const word& objName : cloudObjects_)
+        {
+            const regIOobject* obj = mesh_.cfindObject<regIOobject>(objName);
+            if (obj && obj->writeOpt() == IOobject::AUTO_WRITE)
+            {
+                obj->write();
+            }
+        }
+        cloud.onWrite();
+        cloud.reportTimes();
+    }
+    return true;
+}
+
+
+bool Foam::coagulation::coagulationCloudFunctionObject::write()
+{
+    return true;
+}
+
+
+bool Foam::coagulation::coagulationCloudFunctionObject::end()
+{
+    if (cloud_)
+    {
+        cloud_->endRun();
+    }
+    return true;
+}
+
+
+// ************************************************************************* //

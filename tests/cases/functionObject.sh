@@ -1,0 +1,169 @@
+#!/bin/bash
+# The coagulationCloud function object inside OpenFOAM's own transient solvers, on the
+# constant-kernel duct (uniform flow, inflow and inception):
+#  1. inside scalarTransportFoam (which keeps U as read): the same particles and moment
+#     fields as coagulationFoam, bit for bit, at every written time, with both splittings;
+#     a restart from a written time continues the run bit for bit;
+#  2. inside pimpleFoam (which solves for U each step): the time-averaged M0..M3 against the
+#     analytic eqs 39-45 within the duct tests' tolerance, and balances closed;
+#  3. a steady solver's case (ddtSchemes steadyState) and a velocity the solver does not have
+#     are refused with a FatalIOError naming the entry.
+. "$(dirname "$0")/caseLib.sh"
+
+# fo case [U]: the function object in the case's controlDict
+fo()
+{
+    foamDictionary -case "$1" "$1/system/controlDict" -entry functions/particles \
+        -add "{ type coagulationCloud; libs (coagulationModels); ${2:-} }" > /dev/null
+    foamDictionary -case "$1" "$1/system/controlDict" -entry functions/momentAverages \
+        -remove > /dev/null
+}
+
+# scalarTransport case: the duct as a scalarTransportFoam case (a passive T, U kept as read)
+scalarTransport()
+{
+    local c="$1"
+    sed -e 's/volVectorField/volScalarField/' -e 's/object      U;/object      T;/' \
+        -e 's/\[0 1 -1 0 0 0 0\]/[0 0 0 1 0 0 0]/' -e 's/uniform (1 0 0)/uniform 1/g' \
+        "$c/0/U" > "$c/0/T"
+    cat > "$c/constant/transportProperties" <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object transportProperties; }
+DT 1e-9;
+DICT
+    foamDictionary -case "$c" "$c/system/fvSchemes" -entry divSchemes/"div(phi,T)" \
+        -add "Gauss upwind" > /dev/null
+    foamDictionary -case "$c" "$c/system/fvSolution" -entry solvers/T \
+        -add "{ solver PBiCGStab; preconditioner DILU; tolerance 1e-12; relTol 0; }" > /dev/null
+    foamDictionary -case "$c" "$c/system/fvSolution" -entry SIMPLE \
+        -add "{ nNonOrthogonalCorrectors 0; }" > /dev/null
+    setEntry "$c" system/controlDict application scalarTransportFoam
+}
+
+# 1. Frozen flow: coagulationFoam and the function object in scalarTransportFoam
+for splitting in Lie Strang; do
+    ref=$(newCase constantKernelDuct "fo_coagulationFoam_$splitting")
+    foc=$(newCase constantKernelDuct "fo_scalarTransport_$splitting")
+    for c in "$ref" "$foc"; do
+        setEntry "$c" constant/coagulationProperties splitting "$splitting"
+        setEntry "$c" system/controlDict endTime 0.2
+        setEntry "$c" system/controlDict writeInterval 0.1
+        foamDictionary -case "$c" "$c/system/controlDict" -entry functions/momentAverages \
+            -remove > /dev/null
+    done
+    (cd "$ref" && runApplication coagulationFoam) || fail "coagulationFoam ($splitting)"
+    scalarTransport "$foc"
+    fo "$foc"
+    (cd "$foc" && runApplication scalarTransportFoam) || fail "scalarTransportFoam ($splitting)"
+    checkBalance "$foc/log.scalarTransportFoam"
+    for t in 0.1 0.2; do
+        [ -d "$ref/$t/lagrangian/coagulationCloud" ] || fail "no particles in $ref/$t"
+        for f in "$ref/$t"/lagrangian/coagulationCloud/* "$ref/$t"/M0 "$ref/$t"/M1 "$ref/$t"/M2 \
+                 "$ref/$t"/M3; do
+            g="$foc/$t/${f#"$ref/$t/"}"
+            [ -f "$g" ] || fail "$splitting: the function object wrote no $g"
+            cmp -s "$f" "$g" || fail "$splitting: $g differs from coagulationFoam's"
+        done
+    done
+    echo "ok $splitting: the function object in scalarTransportFoam gives coagulationFoam's particles and moments bit for bit at t = 0.1 and 0.2"
+done
+
+# 1b. A restart of the solver from a time the function object wrote continues the run bit
+#     for bit (the case of 1 with Strang splitting ran 0 -> 0.2 uninterrupted)
+rst=$(newCase constantKernelDuct fo_restart)
+setEntry "$rst" constant/coagulationProperties splitting Strang
+setEntry "$rst" system/controlDict endTime 0.1
+setEntry "$rst" system/controlDict writeInterval 0.1
+foamDictionary -case "$rst" "$rst/system/controlDict" -entry functions/momentAverages \
+    -remove > /dev/null
+scalarTransport "$rst"
+fo "$rst"
+(cd "$rst" && runApplication scalarTransportFoam) || fail "restart: the first run"
+[ -f "$rst/0.1/uniform/coagulationCloudComplete" ] || fail "restart: 0.1 not marked complete"
+setEntry "$rst" system/controlDict endTime 0.2
+(cd "$rst" && mv log.scalarTransportFoam log.first && runApplication scalarTransportFoam) \
+    || fail "restart: the second run"
+for f in "$foc"/0.2/lagrangian/coagulationCloud/* "$foc"/0.2/M0 "$foc"/0.2/M3; do
+    g="$rst/0.2/${f#"$foc/0.2/"}"
+    cmp -s "$f" "$g" || fail "restart: $g differs from the uninterrupted run's"
+done
+checkBalance "$rst/log.scalarTransportFoam"
+echo "ok restart: 0 -> 0.1, then 0.1 -> 0.2, gives the uninterrupted run's particles bit for bit"
+
+# 2. pimpleFoam solving the uniform flow: the duct's analytic moments
+c=$(newCase constantKernelDuct fo_pimpleFoam)
+cat > "$c/0/p" <<'DICT'
+FoamFile { version 2.0; format ascii; class volScalarField; object p; }
+dimensions [0 2 -2 0 0 0 0];
+internalField uniform 0;
+boundaryField
+{
+    inlet { type zeroGradient; }
+    outlet { type fixedValue; value uniform 0; }
+    sides { type empty; }
+}
+DICT
+cat > "$c/constant/transportProperties" <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object transportProperties; }
+transportModel Newtonian;
+nu 1e-5;
+DICT
+cat > "$c/constant/turbulenceProperties" <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object turbulenceProperties; }
+simulationType laminar;
+DICT
+cat > "$c/system/fvSchemes" <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object fvSchemes; }
+ddtSchemes { default Euler; }
+gradSchemes { default Gauss linear; }
+divSchemes { default none; div(phi,U) Gauss linear; div((nuEff*dev2(T(grad(U))))) Gauss linear; }
+laplacianSchemes { default Gauss linear corrected; }
+interpolationSchemes { default linear; }
+snGradSchemes { default corrected; }
+DICT
+cat > "$c/system/fvSolution" <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object fvSolution; }
+solvers
+{
+    p { solver PCG; preconditioner DIC; tolerance 1e-10; relTol 0; }
+    pFinal { $p; }
+    U { solver PBiCGStab; preconditioner DILU; tolerance 1e-10; relTol 0; }
+    UFinal { $U; }
+}
+PIMPLE { nOuterCorrectors 1; nCorrectors 2; nNonOrthogonalCorrectors 0; }
+DICT
+setEntry "$c" system/controlDict application pimpleFoam
+setEntry "$c" system/controlDict endTime 2.0
+setEntry "$c" system/controlDict writeInterval 2.0
+setEntry "$c" constant/coagulationProperties splitting Strang
+fo "$c"
+foamDictionary -case "$c" "$c/system/controlDict" -entry functions/momentAverages -add "$(
+    foamDictionary -case "$COAGULATIONFOAM_DIR/tutorials/constantKernelDuct" \
+        "$COAGULATIONFOAM_DIR/tutorials/constantKernelDuct/system/controlDict" \
+        -entry functions/momentAverages -value)" > /dev/null
+(cd "$c" && runApplication pimpleFoam) || fail "pimpleFoam"
+checkBalance "$c/log.pimpleFoam"
+grep -q "coagulationCloud particles: time 2, particles = " "$c/log.pimpleFoam" \
+    || fail "pimpleFoam: no step of the function object at t = 2"
+(cd "$c" && $report --case . --out results --no-plots --check --check-rel-tol 0.08 \
+    --check-skip-cells 3 --check-sigma 4) \
+    || fail "pimpleFoam: moments off the analytic solution by more than 0.08"
+echo "ok pimpleFoam: the duct's analytic moments within 8 % (4 standard errors), balances closed"
+
+# 3. Refusals
+bad=$(newCase constantKernelDuct fo_steady)
+scalarTransport "$bad"
+fo "$bad"
+setEntry "$bad" system/fvSchemes ddtSchemes/default steadyState
+setEntry "$bad" system/controlDict endTime 1e-3
+(cd "$bad" && scalarTransportFoam > log 2>&1) && fail "a steady solver was not refused"
+grep -q "FOAM FATAL IO ERROR" "$bad/log" && grep -q "steadyState" "$bad/log" \
+    && grep -q "controlDict" "$bad/log" || { tail -20 "$bad/log"; fail "steady: no named error"; }
+bad=$(newCase constantKernelDuct fo_noU)
+scalarTransport "$bad"
+fo "$bad" "U Ugas;"
+setEntry "$bad" system/controlDict endTime 1e-3
+(cd "$bad" && scalarTransportFoam > log 2>&1) && fail "a missing velocity was not refused"
+grep -q "FOAM FATAL IO ERROR" "$bad/log" && grep -q "'Ugas' (entry 'U')" "$bad/log" \
+    || { tail -20 "$bad/log"; fail "no velocity: no named error"; }
+echo "ok refusals: steady solver, missing velocity"
+echo "PASS functionObject"
