@@ -3,7 +3,8 @@
 # constant-kernel duct (uniform flow, inflow and inception):
 #  1. inside scalarTransportFoam (which keeps U as read): the same particles and moment
 #     fields as coagulationFoam, bit for bit, at every written time, with both splittings;
-#     a restart from a written time continues the run bit for bit;
+#     a restart from a written time continues the run bit for bit; decomposed on two
+#     processors, the same particles as coagulationFoam -parallel;
 #  2. inside pimpleFoam (which solves for U each step): the time-averaged M0..M3 against the
 #     analytic eqs 39-45 within the duct tests' tolerance, and balances closed;
 #  3. a steady solver's case (ddtSchemes steadyState) and a velocity the solver does not have
@@ -88,6 +89,32 @@ for f in "$foc"/0.2/lagrangian/coagulationCloud/* "$foc"/0.2/M0 "$foc"/0.2/M3; d
 done
 checkBalance "$rst/log.scalarTransportFoam"
 echo "ok restart: 0 -> 0.1, then 0.1 -> 0.2, gives the uninterrupted run's particles bit for bit"
+
+# 1c. Decomposed on 2 processors: the function object in scalarTransportFoam -parallel gives
+#     coagulationFoam -parallel's particles bit for bit (particles cross the processor
+#     boundary)
+for solver in coagulationFoam scalarTransportFoam; do
+    c=$(newCase constantKernelDuct "fo_parallel_$solver")
+    setEntry "$c" system/controlDict endTime 0.2
+    setEntry "$c" system/controlDict writeInterval 0.2
+    foamDictionary -case "$c" "$c/system/controlDict" -entry functions/momentAverages \
+        -remove > /dev/null
+    if [ "$solver" = scalarTransportFoam ]; then scalarTransport "$c"; fo "$c"; fi
+    (cd "$c" && runApplication decomposePar && runParallel -np 2 "$solver") \
+        || fail "parallel $solver"
+    checkBalance "$c/log.$solver"
+done
+par="$workDir/fo_parallel_coagulationFoam"; pfo="$workDir/fo_parallel_scalarTransportFoam"
+for p in 0 1; do
+    n=0
+    for f in "$par/processor$p/0.2/lagrangian/coagulationCloud"/*; do
+        g="$pfo/processor$p/0.2/lagrangian/coagulationCloud/$(basename "$f")"
+        cmp -s "$f" "$g" || fail "parallel: $g differs from coagulationFoam's"
+        n=$((n + 1))
+    done
+    [ "$n" -gt 0 ] || fail "parallel: no particles on processor $p"
+done
+echo "ok parallel: 2 processors, the function object gives coagulationFoam -parallel's particles bit for bit"
 
 # 2. pimpleFoam solving the uniform flow: the duct's analytic moments
 c=$(newCase constantKernelDuct fo_pimpleFoam)
