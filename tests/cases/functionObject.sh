@@ -7,8 +7,8 @@
 #     processors, the same particles as coagulationFoam -parallel;
 #  2. inside pimpleFoam (which solves for U each step): the time-averaged M0..M3 against the
 #     analytic eqs 39-45 within the duct tests' tolerance, and balances closed;
-#  3. a steady solver's case (ddtSchemes steadyState) and a velocity the solver does not have
-#     are refused with a FatalIOError naming the entry.
+#  3. a steady solver's case (ddtSchemes steadyState), a velocity the solver does not have and
+#     a transport flowSeries are refused with a FatalIOError naming the entry.
 . "$(dirname "$0")/caseLib.sh"
 
 # fo case [U]: the function object in the case's controlDict
@@ -192,5 +192,14 @@ setEntry "$bad" system/controlDict endTime 1e-3
 (cd "$bad" && scalarTransportFoam > log 2>&1) && fail "a missing velocity was not refused"
 grep -q "FOAM FATAL IO ERROR" "$bad/log" && grep -q "'Ugas' (entry 'U')" "$bad/log" \
     || { tail -20 "$bad/log"; fail "no velocity: no named error"; }
-echo "ok refusals: steady solver, missing velocity"
+bad=$(newCase constantKernelDuct fo_series)
+scalarTransport "$bad"
+fo "$bad"
+foamDictionary -entry transport -add "{ type frozenFlow; flowSeries \"$bad\"; }" \
+    "$bad/constant/coagulationProperties" > /dev/null
+setEntry "$bad" system/controlDict endTime 1e-3
+(cd "$bad" && scalarTransportFoam > log 2>&1) && fail "a flow series in the function object was not refused"
+grep -q "FOAM FATAL IO ERROR" "$bad/log" && grep -q "Entry 'flowSeries'" "$bad/log" \
+    || { tail -20 "$bad/log"; fail "flow series: no named error"; }
+echo "ok refusals: steady solver, missing velocity, a flow series"
 echo "PASS functionObject"

@@ -56,7 +56,7 @@ Foam::coagulation::coagulationCloud::readNumberControl() const
 
 Foam::coagulation::coagulationCloud::coagulationCloud
 (
-    const volVectorField& U,
+    volVectorField& U,
     const word& cloudName,
     const bool liveFlow
 )
@@ -191,6 +191,8 @@ Foam::coagulation::coagulationCloud::coagulationCloud
     (
         properties_.subOrEmptyDict("transport"), *this
     );
+    // The flow of the start time (a flow series': its velocity there)
+    transport_->setFlow(U_, mesh_.time().value());
     // The dispersion dictionary itself, not a copy: a Brownian walk reads
     // the particles' material beside it
     const dictionary noDispersion(properties_, dictionary());
@@ -360,9 +362,13 @@ void Foam::coagulation::coagulationCloud::cellStep(const scalar dt)
 void Foam::coagulation::coagulationCloud::transport
 (
     const scalar dt,
+    const scalar tEnd,
     const streamSeeds::purpose inflowStream
 )
 {
+    // The flow over the move (a frozen flow: unchanged)
+    transport_->setFlow(U_, tEnd - 0.5*dt);
+
     transportModel::outflow out(mesh_.boundaryMesh().size());
     transport_->move
     (
@@ -398,6 +404,7 @@ void Foam::coagulation::coagulationCloud::postStep()
 void Foam::coagulation::coagulationCloud::evolve()
 {
     const scalar dt = mesh_.time().deltaTValue();
+    const scalar t = mesh_.time().value();
 
     // Operator splitting over dt (Patterson & Wagner 2011, section 2) of
     //   S: the source terms, each cell on its own: inception (eqs 10, 20)
@@ -412,17 +419,17 @@ void Foam::coagulation::coagulationCloud::evolve()
         // Lie, the paper's scheme: S(dt) then A(dt); first order in dt
         cellStep(dt);
         timer_.coagulationDone();
-        transport(dt);
+        transport(dt, t);
         timer_.transportDone(this->size());
     }
     else
     {
         // Strang: A(dt/2), S(dt), A(dt/2); second order in dt
-        transport(0.5*dt, streamSeeds::inflowFirstHalf);
+        transport(0.5*dt, t - 0.5*dt, streamSeeds::inflowFirstHalf);
         timer_.transportDone(this->size());
         cellStep(dt);
         timer_.coagulationDone();
-        transport(0.5*dt);
+        transport(0.5*dt, t);
         timer_.transportDone(this->size());
     }
 

@@ -118,7 +118,7 @@ bool Foam::coagulation::coagulationCloudFunctionObject::read
     (
         new coagulationCloud
         (
-            mesh_.lookupObject<volVectorField>(UName),
+            mesh_.lookupObjectRef<volVectorField>(UName),
             "coagulationCloud",
             true
         )

@@ -57,7 +57,23 @@ Foam::coagulation::transportModels::frozenFlow::frozenFlow
     UInterp_(),
     cellLength_()
 {
-    caseChecks::keywords(dict, {"type", "interpolationSchemes", "maxCo"});
+    caseChecks::keywords
+    (
+        dict, {"type", "interpolationSchemes", "maxCo", "flowSeries"}
+    );
+    if (dict.found("flowSeries"))
+    {
+        if (cloud.liveFlow())
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'flowSeries' in " << dict.name() << " is for"
+                << " coagulationFoam: inside a flow solver (the"
+                << " coagulationCloud function object) the particles move"
+                << " with the solver's velocity." << nl
+                << "    Remove the entry" << nl << exit(FatalIOError);
+        }
+        series_.reset(new flowSeries(dict, cloud.mesh()));
+    }
 
     // The velocity's interpolation, as a KinematicCloud's
     // solution/interpolationSchemes names it
@@ -381,6 +397,26 @@ Foam::vector Foam::coagulation::transportModels::frozenFlow::walkStep
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::coagulation::transportModels::frozenFlow::setFlow
+(
+    volVectorField& U,
+    const scalar t
+)
+{
+    if (series_)
+    {
+        series_->set(U, t);
+        ++flowVersion_;
+    }
+    else if (cloud_.liveFlow() && liveTimeIndex_ != U.time().timeIndex())
+    {
+        // The solver has made a step since
+        liveTimeIndex_ = U.time().timeIndex();
+        ++flowVersion_;
+    }
+}
+
+
 void Foam::coagulation::transportModels::frozenFlow::move
 (
     const volVectorField& U,
@@ -397,17 +433,11 @@ void Foam::coagulation::transportModels::frozenFlow::move
     cloud_.index().invalidateSort();
     if (scheme_ != "cell")
     {
-        // A live flow's interpolation (its point values) made anew for
-        // each time step's U
-        const label timeIndex = U.time().timeIndex();
-        if
-        (
-            !UInterp_ || &UInterp_->psi() != &U
-         || (cloud_.liveFlow() && UInterpTimeIndex_ != timeIndex)
-        )
+        // The interpolation (its point values) made anew when U changed
+        if (!UInterp_ || &UInterp_->psi() != &U || UInterpVersion_ != flowVersion_)
         {
             UInterp_ = interpolation<vector>::New(scheme_, U);
-            UInterpTimeIndex_ = timeIndex;
+            UInterpVersion_ = flowVersion_;
         }
         td.setInterpolation(UInterp_.get(), maxCo_, &cellLength_);
     }

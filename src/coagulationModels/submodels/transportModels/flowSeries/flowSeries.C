@@ -1,0 +1,227 @@
+/*---------------------------------------------------------------------------*\
+  coagulationFoam: weighted stochastic particles coupled to OpenFOAM
+  Copyright (C) 2025-2026 the coagulationFoam authors
+  SPDX-License-Identifier: GPL-3.0-or-later (see COPYING); links OpenFOAM,
+  which is GPL-3.0-or-later too
+\*---------------------------------------------------------------------------*/
+
+#include "flowSeries.H"
+#include "caseChecks.H"
+#include "pointFields.H"
+#include "Time.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::autoPtr<Foam::volVectorField> Foam::coagulation::flowSeries::read
+(
+    const label i
+) const
+{
+    const IOobject io
+    (
+        "U",
+        case_/times_[i].name(),
+        mesh_,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+    autoPtr<volVectorField> U(new volVectorField(io, mesh_));
+
+    // The split step's Courant limit holds for every field of the series
+    const scalar deltaT = mesh_.time().deltaTValue();
+    const scalar Co = caseChecks::maxCourant(*U, deltaT);
+    if (Co > 1 + 1e-9)
+    {
+        FatalErrorInFunction
+            << "The flow series' velocity " << io.objectPath() << " gives a"
+            << " Courant number of " << Co << " > 1 with deltaT = " << deltaT
+            << " in " << mesh_.time().controlDict().name() << ": particles"
+            << " would cross cells whose cell step they never see." << nl
+            << "    Set deltaT <= " << deltaT/Co << nl << exit(FatalError);
+    }
+    return U;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::coagulation::flowSeries::flowSeries
+(
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+:
+    mesh_(mesh),
+    case_(dict.get<fileName>("flowSeries")),
+    times_()
+{
+    const Time& runTime = mesh.time();
+    case_.expand();
+    if (!case_.isAbsolute())
+    {
+        case_ = runTime.globalPath()/case_;
+    }
+    case_.clean();
+    if (Pstream::parRun())
+    {
+        // A decomposed run reads the flow case decomposed the same way
+        case_ = case_/("processor" + Foam::name(Pstream::myProcNo()));
+    }
+    if (!isDir(case_))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'flowSeries' in " << dict.name() << " names the flow"
+            << " case " << case_ << ", which is not a folder" << nl
+            << exit(FatalIOError);
+    }
+
+    // The same mesh: the same points
+    const pointIOField points
+    (
+        IOobject
+        (
+            "points",
+            case_/"constant"/"polyMesh",
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    const scalar tol = 1e-9*mag(mesh.bounds().span());
+    if
+    (
+        points.size() != mesh.nPoints()
+     || (points.size() && max(mag(points - mesh.points())) > tol)
+    )
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'flowSeries' in " << dict.name() << ": the flow case "
+            << case_ << " is on another mesh (" << points.size()
+            << " points in " << points.objectPath() << ", this case has "
+            << mesh.nPoints() << (points.size() == mesh.nPoints()
+            ? " at other places" : "") << ")." << nl
+            << "    Run the flow on this case's mesh, or map its times with"
+            << " mapFields" << nl << exit(FatalIOError);
+    }
+
+    // The written times that cover the run, each with a U
+    const instantList all = Time::findTimes(case_);
+    const scalar start = runTime.startTime().value();
+    const scalar end = runTime.endTime().value();
+    const scalar small = 1e-6*runTime.deltaTValue();
+    label first = -1, last = -1;
+    forAll(all, i)
+    {
+        if (all[i].value() <= start + small)
+        {
+            first = i;
+        }
+        if (last < 0 && all[i].value() >= end - small)
+        {
+            last = i;
+        }
+    }
+    if (first < 0 || last < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'flowSeries' in " << dict.name() << ": the flow case "
+            << case_ << " has written times "
+            << (all.size() ? all.first().name() + " to " + all.last().name()
+                           : word("none"))
+            << ", which do not cover this run's " << start << " to " << end
+            << nl << exit(FatalIOError);
+    }
+    times_ = instantList(SubList<instant>(all, last - first + 1, first));
+    for (const instant& t : times_)
+    {
+        if (!isFile(case_/t.name()/"U") && !isFile(case_/t.name()/"U.gz"))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'flowSeries' in " << dict.name() << ": the flow"
+                << " case's time " << case_/t.name() << " has no U: the"
+                << " series has a gap between " << times_.first().name()
+                << " and " << times_.last().name() << nl
+                << exit(FatalIOError);
+        }
+    }
+    Info<< "Transport: the velocity of the flow case " << case_ << ", "
+        << times_.size() << " written times from " << times_.first().name()
+        << " to " << times_.last().name() << ", linear in time between them"
+        << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::coagulation::flowSeries::set(volVectorField& U, const scalar t)
+{
+    // The written times a <= t <= b around t (a == b at a written time)
+    const scalar small = 1e-6*mesh_.time().deltaTValue();
+    label a = -1;
+    for (label i = times_.size() - 1; i >= 0; --i)
+    {
+        if (times_[i].value() <= t + small)
+        {
+            a = i;
+            break;
+        }
+    }
+    label b = a;
+    if (a >= 0 && times_[a].value() < t - small)
+    {
+        b = a + 1;
+    }
+    if (a < 0 || b >= times_.size())
+    {
+        FatalErrorInFunction
+            << "The flow series of " << case_ << " has no written times"
+            << " around t = " << t << " (it covers " << times_.first().name()
+            << " to " << times_.last().name() << ")" << nl << exit(FatalError);
+    }
+
+    if (a != a_ || b != b_)
+    {
+        if (a == b_ && Ub_)
+        {
+            Ua_ = std::move(Ub_);
+        }
+        else
+        {
+            Ua_ = read(a);
+        }
+        Ub_ = (b == a) ? autoPtr<volVectorField>() : read(b);
+        a_ = a;
+        b_ = b;
+    }
+
+    const volVectorField& Ua = *Ua_;
+    if (b == a)
+    {
+        U.primitiveFieldRef() = Ua.primitiveField();
+        forAll(U.boundaryField(), patchi)
+        {
+            U.boundaryFieldRef()[patchi] == Ua.boundaryField()[patchi];
+        }
+    }
+    else
+    {
+        const volVectorField& Ub = *Ub_;
+        const scalar theta =
+            (t - times_[a].value())/(times_[b].value() - times_[a].value());
+        U.primitiveFieldRef() =
+            Ua.primitiveField()
+          + theta*(Ub.primitiveField() - Ua.primitiveField());
+        forAll(U.boundaryField(), patchi)
+        {
+            U.boundaryFieldRef()[patchi] ==
+                Ua.boundaryField()[patchi]
+              + theta*(Ub.boundaryField()[patchi] - Ua.boundaryField()[patchi]);
+        }
+    }
+    ++version_;
+}
+
+
+// ************************************************************************* //
