@@ -6,7 +6,9 @@
 #     a restart from a written time continues the run bit for bit; decomposed on two
 #     processors, the same particles as coagulationFoam -parallel;
 #  2. inside pimpleFoam (which solves for U each step): the time-averaged M0..M3 against the
-#     analytic eqs 39-45 within the duct tests' tolerance, and balances closed;
+#     analytic eqs 39-45 within the duct tests' tolerance (Lie), and with an inlet velocity
+#     u0 (1 + a sin(2 pi t/P)) each cell's moments at the exact solution of their age
+#     (Strang, sineDuct.py); balances closed;
 #  3. a steady solver's case (ddtSchemes steadyState), a velocity the solver does not have and
 #     a transport flowSeries are refused with a FatalIOError naming the entry.
 . "$(dirname "$0")/caseLib.sh"
@@ -116,9 +118,12 @@ for p in 0 1; do
 done
 echo "ok parallel: 2 processors, the function object gives coagulationFoam -parallel's particles bit for bit"
 
-# 2. pimpleFoam solving the uniform flow: the duct's analytic moments
-c=$(newCase constantKernelDuct fo_pimpleFoam)
-cat > "$c/0/p" <<'DICT'
+# pimpleCase dir: the duct as a laminar pimpleFoam case (p, nu, fvSchemes, fvSolution)
+pimpleCase()
+{
+    local c
+    c=$(newCase constantKernelDuct "$1")
+    cat > "$c/0/p" <<'DICT'
 FoamFile { version 2.0; format ascii; class volScalarField; object p; }
 dimensions [0 2 -2 0 0 0 0];
 internalField uniform 0;
@@ -129,16 +134,16 @@ boundaryField
     sides { type empty; }
 }
 DICT
-cat > "$c/constant/transportProperties" <<'DICT'
+    cat > "$c/constant/transportProperties" <<'DICT'
 FoamFile { version 2.0; format ascii; class dictionary; object transportProperties; }
 transportModel Newtonian;
 nu 1e-5;
 DICT
-cat > "$c/constant/turbulenceProperties" <<'DICT'
+    cat > "$c/constant/turbulenceProperties" <<'DICT'
 FoamFile { version 2.0; format ascii; class dictionary; object turbulenceProperties; }
 simulationType laminar;
 DICT
-cat > "$c/system/fvSchemes" <<'DICT'
+    cat > "$c/system/fvSchemes" <<'DICT'
 FoamFile { version 2.0; format ascii; class dictionary; object fvSchemes; }
 ddtSchemes { default Euler; }
 gradSchemes { default Gauss linear; }
@@ -147,7 +152,7 @@ laplacianSchemes { default Gauss linear corrected; }
 interpolationSchemes { default linear; }
 snGradSchemes { default corrected; }
 DICT
-cat > "$c/system/fvSolution" <<'DICT'
+    cat > "$c/system/fvSolution" <<'DICT'
 FoamFile { version 2.0; format ascii; class dictionary; object fvSolution; }
 solvers
 {
@@ -158,23 +163,40 @@ solvers
 }
 PIMPLE { nOuterCorrectors 1; nCorrectors 2; nNonOrthogonalCorrectors 0; }
 DICT
-setEntry "$c" system/controlDict application pimpleFoam
-setEntry "$c" system/controlDict endTime 2.0
-setEntry "$c" system/controlDict writeInterval 2.0
-setEntry "$c" constant/coagulationProperties splitting Strang
-fo "$c"
+    setEntry "$c" system/controlDict application pimpleFoam
+    setEntry "$c" system/controlDict endTime 1.2
+    setEntry "$c" system/controlDict writeInterval 1.2
+    fo "$c"
+    echo "$c"
+}
+
+# 2. pimpleFoam solving the uniform flow (Lie splitting): the duct's analytic moments
+c=$(pimpleCase fo_pimpleFoam)
+setEntry "$c" constant/coagulationProperties splitting Lie
 foamDictionary -case "$c" "$c/system/controlDict" -entry functions/momentAverages -add "$(
     foamDictionary -case "$COAGULATIONFOAM_DIR/tutorials/constantKernelDuct" \
         "$COAGULATIONFOAM_DIR/tutorials/constantKernelDuct/system/controlDict" \
         -entry functions/momentAverages -value)" > /dev/null
 (cd "$c" && runApplication pimpleFoam) || fail "pimpleFoam"
 checkBalance "$c/log.pimpleFoam"
-grep -q "coagulationCloud particles: time 2, particles = " "$c/log.pimpleFoam" \
-    || fail "pimpleFoam: no step of the function object at t = 2"
+grep -q "coagulationCloud particles: time 1.2, particles = " "$c/log.pimpleFoam" \
+    || fail "pimpleFoam: no step of the function object at t = 1.2"
 (cd "$c" && $report --case . --out results --no-plots --check --check-rel-tol 0.08 \
     --check-skip-cells 3 --check-sigma 4) \
     || fail "pimpleFoam: moments off the analytic solution by more than 0.08"
-echo "ok pimpleFoam: the duct's analytic moments within 8 % (4 standard errors), balances closed"
+echo "ok pimpleFoam (Lie): the duct's analytic moments within 8 % (4 standard errors), balances closed"
+
+# 2b. pimpleFoam with the inlet velocity u(t) = u0 (1 + a sin(2 pi t/P)) (Strang splitting):
+#     each cell's moments at the exact solution of their age (sineDuct.py)
+c=$(pimpleCase fo_pimpleSine)
+setEntry "$c" constant/coagulationProperties splitting Strang
+setEntry "$c" 0/U boundaryField/inlet "{ type uniformFixedValue; uniformValue sine; uniformValueCoeffs { frequency 2.5; amplitude 0.5; scale (1 0 0); level (1 0 0); } value uniform (1 0 0); }"
+(cd "$c" && runApplication pimpleFoam) || fail "pimpleFoam, sine inlet"
+checkBalance "$c/log.pimpleFoam"
+PYTHONPATH="$COAGULATIONFOAM_DIR/src/python${PYTHONPATH:+:$PYTHONPATH}" \
+    "$COAGULATIONFOAM_PYTHON" "$testsDir/sineDuct.py" "$c" 1 0.5 0.4 \
+    || fail "pimpleFoam, sine inlet: moments off the exact solution at their age"
+echo "ok pimpleFoam (Strang), sine inlet: each cell's moments at the exact solution of their age"
 
 # 3. Refusals
 bad=$(newCase constantKernelDuct fo_steady)
