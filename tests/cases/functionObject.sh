@@ -223,5 +223,16 @@ setEntry "$bad" system/controlDict endTime 1e-3
 (cd "$bad" && scalarTransportFoam > log 2>&1) && fail "a flow series in the function object was not refused"
 grep -q "FOAM FATAL IO ERROR" "$bad/log" && grep -q "Entry 'flowSeries'" "$bad/log" \
     || { tail -20 "$bad/log"; fail "flow series: no named error"; }
-echo "ok refusals: steady solver, missing velocity, a flow series"
+# a FatalError (not an IO one) while the cloud is made stops the run: OpenFOAM's list of
+# function objects would make it a warning and run on without the particles
+bad=$(newCase constantKernelDuct fo_incomplete)
+scalarTransport "$bad"
+fo "$bad"
+cp -r "$rst/0.1" "$bad/0.1"
+rm "$bad/0.1/uniform/coagulationCloudComplete"
+setEntry "$bad" system/controlDict endTime 0.11
+(cd "$bad" && scalarTransportFoam > log 2>&1) && fail "an incomplete start time was not refused"
+grep -q "FOAM FATAL ERROR" "$bad/log" && grep -q "is incomplete" "$bad/log" \
+    || { tail -20 "$bad/log"; fail "incomplete start time: no error"; }
+echo "ok refusals: steady solver, missing velocity, a flow series, an incomplete start time"
 echo "PASS functionObject"

@@ -16,7 +16,8 @@ import coagulationPost
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 PKG = os.path.dirname(os.path.abspath(coagulationPost.__file__))
 MAINS = {"lagrangianStudy": 1, "coagulationDiffusionFigures": 2, "coagulationDiffusionColumn": 2,
-         "pseudoTurbulencePuff": 2, "splittingStudy": 2, "hotReactor": 2}   # their usage exit status
+         "pseudoTurbulencePuff": 2, "splittingStudy": 2, "hotReactor": 2,
+         "squareCylinder": 2}   # their usage exit status
 
 
 def modules():

@@ -51,6 +51,9 @@ imports none of them; ``coagulationPost.X`` imports module X on first use:
               main: tables and plot of tests/benchmarks/splittingStudy.sh's runs
   hotReactor  main: the hot reactor's size distributions and mean diameter on the axis
               against plugFlowReference's plug flow (tutorials/hotReactor)
+  squareCylinder
+              main: the square cylinder's size distributions and probe series in the
+              wake (tutorials/squareCylinder)
 
 Tests: PYTHONPATH=src/python python3 -m pytest tests/python
 """
@@ -75,6 +78,7 @@ __all__ = [
     "pseudoTurbulencePuff",
     "splittingStudy",
     "hotReactor",
+    "squareCylinder",
 ]
 
 

@@ -241,6 +241,17 @@ void Foam::coagulation::coagulationCloud::checkStartTime() const
     labelList incomplete(Pstream::nProcs(), 0);
     incomplete[Pstream::myProcNo()] =
         isFile(uniform/"time") && !isFile(uniform/completeMarker);
+    // In a flow solver (the coagulationCloud function object) a time the
+    // solver wrote without the cloud (no particles, no M0) is a fresh start
+    if
+    (
+        liveFlow_
+     && !isDir(runTime.timePath()/cloud::prefix/name())
+     && !isFile(runTime.timePath()/"M0")
+    )
+    {
+        incomplete[Pstream::myProcNo()] = 0;
+    }
     Pstream::gatherList(incomplete);
     Pstream::scatterList(incomplete);
 

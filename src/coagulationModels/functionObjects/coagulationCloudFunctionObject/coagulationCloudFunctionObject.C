@@ -114,20 +114,46 @@ bool Foam::coagulation::coagulationCloudFunctionObject::read
     // The objects the cloud registers with the mesh: those written with
     // the time are written again once the step is made
     const wordList before(mesh_.objectRegistry::sortedToc());
-    cloud_.reset
-    (
-        new coagulationCloud
+    try
+    {
+        cloud_.reset
         (
-            mesh_.lookupObjectRef<volVectorField>(UName),
-            "coagulationCloud",
-            true
-        )
-    );
+            new coagulationCloud
+            (
+                mesh_.lookupObjectRef<volVectorField>(UName),
+                "coagulationCloud",
+                true
+            )
+        );
+    }
+    catch (const Foam::IOerror&)
+    {
+        throw;  // functionObjectList stops the run
+    }
+    catch (const Foam::error& err)
+    {
+        // functionObjectList would make any other error a warning and run
+        // on without the particles: stop the run
+        FatalError.dontThrowExceptions();
+        FatalErrorInFunction
+            << err.message().c_str() << nl
+            << "    (function object " << name() << ", type " << typeName
+            << ")" << nl << exit(FatalError);
+    }
+    // The solver's writes would write them before the step (and before the
+    // function object's timeStart): the function object writes them itself
     const wordHashSet old(before);
     for (const word& objName : mesh_.objectRegistry::sortedToc())
     {
-        if (!old.found(objName))
+        regIOobject* obj =
+            mesh_.objectRegistry::getObjectPtr<regIOobject>(objName);
+        if
+        (
+            !old.found(objName) && obj
+         && obj->writeOpt() == IOobject::AUTO_WRITE
+        )
         {
+            obj->writeOpt() = IOobject::NO_WRITE;
             cloudObjects_.append(objName);
         }
     }
@@ -149,7 +175,7 @@ bool Foam::coagulation::coagulationCloudFunctionObject::execute()
         for (const word& objName : cloudObjects_)
         {
             const regIOobject* obj = mesh_.cfindObject<regIOobject>(objName);
-            if (obj && obj->writeOpt() == IOobject::AUTO_WRITE)
+            if (obj)
             {
                 obj->write();
             }
