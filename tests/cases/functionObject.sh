@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 # The coagulationCloud function object inside OpenFOAM's own transient solvers, on the
 # constant-kernel duct (uniform flow, inflow and inception):
 #  1. inside scalarTransportFoam (which keeps U as read): the same particles and moment
@@ -9,8 +10,10 @@
 #     analytic eqs 39-45 within the duct tests' tolerance (Lie), and with an inlet velocity
 #     u0 (1 + a sin(2 pi t/P)) each cell's moments at the exact solution of their age
 #     (Strang, sineDuct.py); balances closed;
-#  3. a steady solver's case (ddtSchemes steadyState), a velocity the solver does not have and
-#     a transport flowSeries are refused with a FatalIOError naming the entry.
+#  3. a steady solver's case (ddtSchemes steadyState), a velocity the solver does not have,
+#     a transport flowSeries, executeInterval 2 and a timeEnd before
+#     endTime are refused with a FatalIOError naming the entry; an incomplete start time
+#     stops the run (a FatalError that OpenFOAM's function-object list would only warn of).
 . "$(dirname "$0")/caseLib.sh"
 
 # fo case [U]: the function object in the case's controlDict
@@ -223,6 +226,15 @@ setEntry "$bad" system/controlDict endTime 1e-3
 (cd "$bad" && scalarTransportFoam > log 2>&1) && fail "a flow series in the function object was not refused"
 grep -q "FOAM FATAL IO ERROR" "$bad/log" && grep -q "Entry 'flowSeries'" "$bad/log" \
     || { tail -20 "$bad/log"; fail "flow series: no named error"; }
+for entry in "executeInterval 2;" "timeEnd 5e-4;"; do
+    bad=$(newCase constantKernelDuct fo_control)
+    scalarTransport "$bad"
+    fo "$bad" "$entry"
+    setEntry "$bad" system/controlDict endTime 1e-3
+    (cd "$bad" && scalarTransportFoam > log 2>&1) && fail "'$entry' was not refused"
+    grep -q "FOAM FATAL IO ERROR" "$bad/log" && grep -q "${entry%% *}" "$bad/log" \
+        || { tail -20 "$bad/log"; fail "'$entry': no named error"; }
+done
 # a FatalError (not an IO one) while the cloud is made stops the run: OpenFOAM's list of
 # function objects would make it a warning and run on without the particles
 bad=$(newCase constantKernelDuct fo_incomplete)
@@ -234,5 +246,5 @@ setEntry "$bad" system/controlDict endTime 0.11
 (cd "$bad" && scalarTransportFoam > log 2>&1) && fail "an incomplete start time was not refused"
 grep -q "FOAM FATAL ERROR" "$bad/log" && grep -q "is incomplete" "$bad/log" \
     || { tail -20 "$bad/log"; fail "incomplete start time: no error"; }
-echo "ok refusals: steady solver, missing velocity, a flow series, an incomplete start time"
+echo "ok refusals: steady solver, missing velocity, a flow series, stepping less often or ending early, an incomplete start time"
 echo "PASS functionObject"

@@ -154,7 +154,7 @@ TEST(SumKernel, ValuesAndMajorantsAreThePartsSums)
     EXPECT_EQ(sum.name(), "sum");
     EXPECT_EQ(sum.nBasis(), 7 + 5 + 7);
     EXPECT_EQ(sum.nMajorantGroups(), 4);
-    // the four combinations: t1 (4 or 4 terms), s (9), t2 (4 or 4)
+    // the four combinations: t1 (4 terms in each group), s (9), t2 (4 in each group)
     EXPECT_EQ(sum.majorantTerms().size(), std::size_t(2 * 8 + 4 * 9 + 2 * 8));
     EXPECT_TRUE(sum.constantBasis(0));
     EXPECT_FALSE(sum.constantBasis(1));
@@ -227,7 +227,7 @@ TEST(SumKernel, SamplerRefusesASumBeyondItsLimits)
 //- The sampler's summed majorant over a polydisperse population (1 nm to 10 um) is the
 //  directly summed pair total of the terms (the least group), and every pair's proposal rate
 //  majorises its K (w2): settling alone and the sum of the Brownian continuum kernel and
-//  settling (16 terms, 13 basis functions: the sampler's limits for SWA as well)
+//  settling (13 terms, 12 basis functions, 16 columns under SWA: the sampler's limit)
 TEST(SumKernel, SamplerSumsTheMajorantOverAPopulation)
 {
     const ParticleMaterial m{1800.0};

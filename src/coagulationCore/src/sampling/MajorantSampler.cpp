@@ -130,8 +130,8 @@ void MajorantSampler::chooseGroup(const Particle* particles, std::size_t n)
     // bounded cost a step
     double first[maxBasis] = {}, second[maxBasis] = {};
     const std::size_t nb = static_cast<std::size_t>(kernel_->nBasis());
-    const std::size_t stride = n > chooseSample ? n / chooseSample : 1;
-    for (std::size_t j = 0; j < n; j += stride) {
+    const std::size_t stride = (n + chooseSample - 1) / chooseSample;
+    for (std::size_t j = 0; j < n; j += (stride > 0 ? stride : 1)) {
         kernel_->basis(particles[j].type, phi2_);
         const double w = weightedSecond_ ? particles[j].weight : 1.0;
         for (std::size_t b = 0; b < nb; ++b) {

@@ -440,6 +440,9 @@ void Foam::coagulation::coagulationCloud::evolve()
 
 void Foam::coagulation::coagulationCloud::onWrite()
 {
+    // The flow written is that of the time (a flow series set it at the
+    // middle of the last move)
+    transport_->setFlow(U_, mesh_.time().value());
     {
         const restartPrecision allDigits;
         for (regIOobject* f : inputFields_)

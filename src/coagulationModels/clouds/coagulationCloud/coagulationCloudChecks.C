@@ -242,15 +242,25 @@ void Foam::coagulation::coagulationCloud::checkStartTime() const
     incomplete[Pstream::myProcNo()] =
         isFile(uniform/"time") && !isFile(uniform/completeMarker);
     // In a flow solver (the coagulationCloud function object) a time the
-    // solver wrote without the cloud (no particles, no M0) is a fresh start
-    if
-    (
-        liveFlow_
-     && !isDir(runTime.timePath()/cloud::prefix/name())
-     && !isFile(runTime.timePath()/"M0")
-    )
+    // solver wrote before the cloud ever ran (no time up to it holds the
+    // cloud's particles or M0) is a fresh start
+    if (liveFlow_ && incomplete[Pstream::myProcNo()])
     {
-        incomplete[Pstream::myProcNo()] = 0;
+        bool cloudBefore = false;
+        for (const instant& t : Time::findTimes(runTime.path()))
+        {
+            const fileName dir(runTime.path()/t.name());
+            if
+            (
+                t.name() != "constant" && t.value() <= runTime.value()
+             && (isDir(dir/cloud::prefix/name()) || isFile(dir/"M0"))
+            )
+            {
+                cloudBefore = true;
+                break;
+            }
+        }
+        incomplete[Pstream::myProcNo()] = cloudBefore;
     }
     Pstream::gatherList(incomplete);
     Pstream::scatterList(incomplete);

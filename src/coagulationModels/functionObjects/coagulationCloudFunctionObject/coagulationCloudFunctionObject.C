@@ -7,6 +7,7 @@
 
 #include "coagulationCloudFunctionObject.H"
 #include "caseChecks.H"
+#include "restartPrecision.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -99,6 +100,35 @@ bool Foam::coagulation::coagulationCloudFunctionObject::read
     }
     checkTransient(dict);
 
+    // Every execution is a split step over the solver's deltaT, and the end
+    // checks the balances: the function object runs at every time step to
+    // the end of the run
+    const word control = dict.getOrDefault<word>("executeControl", "timeStep");
+    const label interval = dict.getOrDefault<label>("executeInterval", 1);
+    if (control != "timeStep" || interval != 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Function object " << name() << " (type " << typeName
+            << ") in " << dict.name() << " has executeControl " << control
+            << " and executeInterval " << interval << ": the population makes"
+            << " a split step of every time step of the solver, so both must"
+            << " be left at timeStep and 1" << nl << exit(FatalIOError);
+    }
+    if
+    (
+        dict.found("timeEnd")
+     && dict.get<scalar>("timeEnd") < time_.endTime().value()
+    )
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'timeEnd' = " << dict.get<scalar>("timeEnd") << " of"
+            << " function object " << name() << " in " << dict.name()
+            << " is before the run's endTime " << time_.endTime().value()
+            << ": the population's balances are checked at the end of the"
+            << " run." << nl << "    Remove the entry" << nl
+            << exit(FatalIOError);
+    }
+
     const word UName = dict.getOrDefault<word>("U", "U");
     if (!mesh_.foundObject<volVectorField>(UName))
     {
@@ -126,9 +156,15 @@ bool Foam::coagulation::coagulationCloudFunctionObject::read
             )
         );
     }
-    catch (const Foam::IOerror&)
+    catch (const Foam::IOerror& err)
     {
-        throw;  // functionObjectList stops the run
+        // functionObjectList prints it on the master and stops the run: a
+        // processor's own error printed here first
+        if (Pstream::parRun() && !Pstream::master())
+        {
+            Perr<< err << endl;
+        }
+        throw;
     }
     catch (const Foam::error& err)
     {
@@ -175,7 +211,13 @@ bool Foam::coagulation::coagulationCloudFunctionObject::execute()
         for (const word& objName : cloudObjects_)
         {
             const regIOobject* obj = mesh_.cfindObject<regIOobject>(objName);
-            if (obj)
+            if (obj && obj->readOpt() == IOobject::MUST_READ)
+            {
+                // a field the cloud read: all digits, for a restart
+                const restartPrecision allDigits;
+                obj->write();
+            }
+            else if (obj)
             {
                 obj->write();
             }

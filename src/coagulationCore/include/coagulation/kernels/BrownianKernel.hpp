@@ -46,7 +46,8 @@ BrownianRegime parseBrownianRegime(const std::string& name);
 //    transition     two majorants, as two groups: the free-molecular one (K is below the
 //                   free-molecular K, F exceeding its second term) and the continuum one
 //                   times transitionContinuumMargin; the sampler proposes from the one
-//                   whose sum over the population is the lesser when the cell step starts.
+//                   whose sum over the population is the lesser at each build of the
+//                   sampler's tree.
 class BrownianKernel : public CoagulationKernel {
 public:
     //- The continuum majorant's factor in the transition regime: Fuchs' kernel exceeds the

@@ -27,7 +27,8 @@ struct MajorantTerm {
 //  without terms is K = 0 (NoCoagulationKernel).
 //  A kernel may give several majorants, each a group of terms (groups 0, 1, ..., their terms
 //  listed in that order), each >= K on its own: the sampler proposes from the one whose sum
-//  over the population is the least when the cell step starts (as MOpS chooses between its
+//  over the population is the least at every build of the sampler's tree (when the cell step
+//  starts, and after a halving or doubling of the population; as MOpS chooses between its
 //  free-molecular and slip-flow majorants), so the fictitious jumps are those of the tighter
 //  one, and the sampler's tree holds that group's columns only.
 class CoagulationKernel {

@@ -250,7 +250,7 @@ private:
         return r;
     }
 
-    //- f(nc) for the tree's column count: nc a std::integral_constant of it for 1 to 4
+    //- f(nc) for the tree's column count: nc a std::integral_constant of it for 1 to 12
     //  columns, so that the steps are compiled with the node block's size a constant (the
     //  walks, assign() and the build), and of 0 above, where the steps read ncol_
     template <class F>

@@ -33,12 +33,13 @@ Foam::autoPtr<Foam::volVectorField> Foam::coagulation::flowSeries::read
     const scalar Co = caseChecks::maxCourant(*U, deltaT);
     if (Co > 1 + 1e-9)
     {
-        FatalErrorInFunction
-            << "The flow series' velocity " << io.objectPath() << " gives a"
-            << " Courant number of " << Co << " > 1 with deltaT = " << deltaT
-            << " in " << mesh_.time().controlDict().name() << ": particles"
-            << " would cross cells whose cell step they never see." << nl
-            << "    Set deltaT <= " << deltaT/Co << nl << exit(FatalError);
+        FatalIOErrorInFunction(mesh_.time().controlDict())
+            << "Entry 'deltaT' = " << deltaT << " in "
+            << mesh_.time().controlDict().name() << " gives the flow series'"
+            << " velocity " << io.objectPath() << " a Courant number of " << Co
+            << " > 1: particles would cross cells whose cell step they never"
+            << " see." << nl << "    Set deltaT <= " << deltaT/Co << nl
+            << exit(FatalIOError);
     }
     return U;
 }
@@ -107,9 +108,17 @@ Foam::coagulation::flowSeries::flowSeries
     }
 
     // The written times that cover the run, each with a U
-    const instantList all = Time::findTimes(case_);
+    DynamicList<instant> written;
+    for (const instant& t : Time::findTimes(case_))
+    {
+        if (t.name() != "constant")
+        {
+            written.append(t);
+        }
+    }
+    const instantList all(std::move(written));
     const scalar start = runTime.startTime().value();
-    const scalar end = runTime.endTime().value();
+    const scalar end = max(runTime.endTime().value(), start);
     const scalar small = 1e-6*runTime.deltaTValue();
     label first = -1, last = -1;
     forAll(all, i)
@@ -134,6 +143,28 @@ Foam::coagulation::flowSeries::flowSeries
             << nl << exit(FatalIOError);
     }
     times_ = instantList(SubList<instant>(all, last - first + 1, first));
+
+    // Decomposed: every processor's folder holds the same times
+    if (Pstream::parRun())
+    {
+        const scalar t0 = times_.first().value(), t1 = times_.last().value();
+        const label n = times_.size();
+        if
+        (
+            returnReduce(n, minOp<label>()) != returnReduce(n, maxOp<label>())
+         || returnReduce(t0, minOp<scalar>()) != returnReduce(t0, maxOp<scalar>())
+         || returnReduce(t1, minOp<scalar>()) != returnReduce(t1, maxOp<scalar>())
+        )
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'flowSeries' in " << dict.name() << ": the flow"
+                << " case's processor folders hold different written times"
+                << " (this processor's " << case_ << ": " << n << " from "
+                << times_.first().name() << " to " << times_.last().name()
+                << ")." << nl << "    Decompose every time of the flow case"
+                << nl << exit(FatalIOError);
+        }
+    }
     for (const instant& t : times_)
     {
         if (!isFile(case_/t.name()/"U") && !isFile(case_/t.name()/"U.gz"))
