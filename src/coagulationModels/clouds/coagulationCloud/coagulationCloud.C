@@ -7,6 +7,7 @@
 
 #include "coagulationCloud.H"
 #include "caseChecks.H"
+#include "flowFields.H"
 #include "particleMaterial.H"
 #include "restartPrecision.H"
 
@@ -83,6 +84,8 @@ Foam::coagulation::coagulationCloud::coagulationCloud
         properties_.subDict("statisticalWeight"), algorithmName_, mesh_
     ),
     seeds_(properties_, mesh_.time()),
+    ownFields_(),
+    fields_(nullptr),
     kernel_(),
     inception_(),
     algorithm_(),
@@ -140,6 +143,20 @@ Foam::coagulation::coagulationCloud::coagulationCloud
     }
     splitting_ = splittingSchemeNames[scheme];
     Info<< "Splitting " << scheme << endl;
+
+    // The fields the submodels read: frozen, of a flow series, or the flow
+    // solver's (the mesh's object, found by the submodels)
+    if (!mesh_.foundObject<flowFields>(flowFields::typeName))
+    {
+        ownFields_.reset
+        (
+            new flowFields
+            (
+                mesh_, properties_.subOrEmptyDict("transport"), liveFlow_
+            )
+        );
+    }
+    fields_ = &flowFields::of(mesh_);
 
     kernel_ = coagulationKernel::New(properties_.subDict("kernel"), mesh_);
     inception_ = inceptionModel::New
@@ -350,8 +367,17 @@ void Foam::coagulation::coagulationCloud::takeInputFields()
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::coagulation::coagulationCloud::cellStep(const scalar dt)
+void Foam::coagulation::coagulationCloud::cellStep
+(
+    const scalar dt,
+    const scalar tEnd
+)
 {
+    // The kernel's and the inception's fields at the middle of the step
+    fields_->update(tEnd - 0.5*dt);
+    kernel_->correct();
+    inception_->correct();
+
     cellStepper_->advance(dt, events_, removedInCells_);
     checkMemory();
 
@@ -366,8 +392,11 @@ void Foam::coagulation::coagulationCloud::transport
     const streamSeeds::purpose inflowStream
 )
 {
-    // The flow over the move (a frozen flow: unchanged)
+    // The flow over the move (a frozen flow: unchanged), and the walk's
+    // diffusivity
     transport_->setFlow(U_, tEnd - 0.5*dt);
+    fields_->update(tEnd - 0.5*dt);
+    dispersion_->correct();
 
     transportModel::outflow out(mesh_.boundaryMesh().size());
     transport_->move
@@ -417,7 +446,7 @@ void Foam::coagulation::coagulationCloud::evolve()
     if (splitting_ == splittingScheme::Lie)
     {
         // Lie, the paper's scheme: S(dt) then A(dt); first order in dt
-        cellStep(dt);
+        cellStep(dt, t);
         timer_.coagulationDone();
         transport(dt, t);
         timer_.transportDone(this->size());
@@ -427,7 +456,7 @@ void Foam::coagulation::coagulationCloud::evolve()
         // Strang: A(dt/2), S(dt), A(dt/2); second order in dt
         transport(0.5*dt, t - 0.5*dt, streamSeeds::inflowFirstHalf);
         timer_.transportDone(this->size());
-        cellStep(dt);
+        cellStep(dt, t);
         timer_.coagulationDone();
         transport(0.5*dt, t);
         timer_.transportDone(this->size());

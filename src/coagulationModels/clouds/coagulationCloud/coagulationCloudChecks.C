@@ -11,6 +11,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "coagulationCloud.H"
+#include "OFstream.H"
 #include "caseChecks.H"
 #include "restartPrecision.H"
 #include "fvMesh.H"
@@ -600,15 +601,16 @@ void Foam::coagulation::coagulationCloud::completeWrite()
     // holds the same number
     marker.add("totalParticles", returnReduce(this->size(), sumOp<label>()));
     marker.add("algorithm", algorithmName_);
-    // All digits: the volume is compared at a restart
+    // All digits: the volume is compared at a restart. Written to the
+    // folder of that time: regIOobject::writeObject would write to the
+    // time now (in a flow solver the next step's, where the marker is due)
     const restartPrecision allDigits;
-    marker.regIOobject::writeObject
-    (
-        IOstream::ASCII,
-        IOstream::currentVersion,
-        IOstream::UNCOMPRESSED,
-        true
-    );
+    const fileName dir(mesh_.time().path()/pendingWrite_/"uniform");
+    mkDir(dir);
+    OFstream os(dir/completeMarker);
+    marker.writeHeader(os);
+    marker.writeData(os);
+    IOobject::writeEndDivider(os);
     pendingWrite_.clear();
 }
 

@@ -88,6 +88,23 @@ Foam::coagulation::coagulationKernels::Brownian::Brownian
     const coag::BrownianRegime regime = layout.regime();
     const coag::ParticleMaterial& material = layout.material();
 
+    makeCellKernels();
+
+    const Pair<scalar> lambda = gas_.meanFreePathRange();
+    Info<< "    regime " << coag::brownianRegimeName(regime).c_str()
+        << ", particle density " << material.density << " kg/m3, mass unit "
+        << material.massUnit << " kg, mean free path from "
+        << lambda.first() << " to " << lambda.second() << " m" << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::coagulation::coagulationKernels::Brownian::makeCellKernels()
+{
+    const coag::BrownianKernel& layout =
+        static_cast<const coag::BrownianKernel&>(core());
+    cellKernels().clear();
     cellKernels().reserve(gas_.size());
     for (label celli = 0; celli < gas_.size(); ++celli)
     {
@@ -95,16 +112,21 @@ Foam::coagulation::coagulationKernels::Brownian::Brownian
         (
             std::make_unique<coag::BrownianKernel>
             (
-                regime, gas_[celli], material
+                layout.regime(), gas_[celli], layout.material()
             )
         );
     }
+}
 
-    const Pair<scalar> lambda = gas_.meanFreePathRange();
-    Info<< "    regime " << coag::brownianRegimeName(regime).c_str()
-        << ", particle density " << material.density << " kg/m3, mass unit "
-        << material.massUnit << " kg, mean free path from "
-        << lambda.first() << " to " << lambda.second() << " m" << endl;
+
+bool Foam::coagulation::coagulationKernels::Brownian::correct()
+{
+    if (gas_.update())
+    {
+        makeCellKernels();
+        return true;
+    }
+    return false;
 }
 
 

@@ -11,29 +11,47 @@
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::scalarField Foam::coagulation::cellGas::cellValues
+const Foam::coagulation::flowFields::field*
+Foam::coagulation::cellGas::cellValues
 (
     const dictionary& dict,
     const word& model,
     const word& key,
     const dimensionSet& dims,
     const fvMesh& mesh,
-    autoPtr<volScalarField>& field
+    scalar& uniform
 )
 {
     if (dict.found(key) && !dict.lookup(key)[0].isWord())
     {
-        return scalarField(mesh.nCells(), caseChecks::positive(dict, key));
+        uniform = caseChecks::positive(dict, key);
+        return nullptr;
     }
-    field = caseChecks::cellField
+    const flowFields::field& f = flowFields::of(mesh).cellField
     (
-        dict, model, key, dict.getOrDefault<word>(key, key), mesh, dims,
-        true
+        dict, model, key, dict.getOrDefault<word>(key, key), dims, true
     );
-    Info<< "    " << key << " from field " << field->name() << ": "
-        << gMin(field->primitiveField()) << " to "
-        << gMax(field->primitiveField()) << endl;
-    return field->primitiveField();
+    Info<< "    " << key << " from field " << f.name() << ": "
+        << gMin(f().primitiveField()) << " to "
+        << gMax(f().primitiveField()) << endl;
+    return &f;
+}
+
+
+void Foam::coagulation::cellGas::makeGas()
+{
+    coag::GasState gas;
+    gas.molarMass = molarMass_;
+    const label n = label(gas_.size());
+    for (label celli = 0; celli < n; ++celli)
+    {
+        gas.T = T_ ? (*T_)().primitiveField()[celli] : uniformT_;
+        gas.p = p_ ? (*p_)().primitiveField()[celli] : uniformP_;
+        gas.mu = sutherland_ ? coag::sutherlandViscosity(gas.T, As_, Ts_) : mu_;
+        gas_[celli] = gas;
+    }
+    TVersion_ = T_ ? T_->version() : 0;
+    pVersion_ = p_ ? p_->version() : 0;
 }
 
 
@@ -46,45 +64,36 @@ Foam::coagulation::cellGas::cellGas
     const fvMesh& mesh
 )
 :
-    T_(),
-    p_(),
-    gas_()
+    uniformT_(0),
+    uniformP_(0),
+    T_(cellValues(dict, model, "T", dimTemperature, mesh, uniformT_)),
+    p_(cellValues(dict, model, "p", dimPressure, mesh, uniformP_)),
+    sutherland_(!dict.found("mu") || dict.lookup("mu")[0].isWord()),
+    mu_(0),
+    As_(dict.found("As") ? caseChecks::positive(dict, "As") : 1.458e-6),
+    Ts_(dict.found("Ts") ? caseChecks::positive(dict, "Ts") : 110.4),
+    molarMass_(coag::GasState().molarMass),
+    TVersion_(0),
+    pVersion_(0),
+    gas_(mesh.nCells())
 {
-    const scalarField T
-    (
-        cellValues(dict, model, "T", dimTemperature, mesh, T_)
-    );
-    const scalarField p(cellValues(dict, model, "p", dimPressure, mesh, p_));
-
     // mu: a value, or Sutherland's law on each cell's T
-    const bool sutherland =
-        !dict.found("mu") || dict.lookup("mu")[0].isWord();
-    if (sutherland && dict.found("mu") && dict.get<word>("mu") != "sutherland")
+    if (sutherland_ && dict.found("mu") && dict.get<word>("mu") != "sutherland")
     {
         FatalIOErrorInFunction(dict)
             << "Entry 'mu' = " << dict.get<word>("mu") << " in " << dict.name()
             << " is neither a value [Pa s] nor sutherland" << nl
             << exit(FatalIOError);
     }
-    const scalar mu = sutherland ? 0 : caseChecks::positive(dict, "mu");
-    const scalar As =
-        dict.found("As") ? caseChecks::positive(dict, "As") : 1.458e-6;
-    const scalar Ts =
-        dict.found("Ts") ? caseChecks::positive(dict, "Ts") : 110.4;
-    coag::GasState gas;
+    if (!sutherland_)
+    {
+        mu_ = caseChecks::positive(dict, "mu");
+    }
     if (dict.found("molarMass"))
     {
-        gas.molarMass = caseChecks::positive(dict, "molarMass");
+        molarMass_ = caseChecks::positive(dict, "molarMass");
     }
-
-    gas_.reserve(T.size());
-    forAll(T, celli)
-    {
-        gas.T = T[celli];
-        gas.p = p[celli];
-        gas.mu = sutherland ? coag::sutherlandViscosity(gas.T, As, Ts) : mu;
-        gas_.push_back(gas);
-    }
+    makeGas();
 }
 
 
@@ -99,6 +108,21 @@ void Foam::coagulation::cellGas::checkGasKeywords
     wordList valid{"T", "p", "mu", "As", "Ts", "molarMass"};
     valid.append(own);
     caseChecks::keywords(dict, valid);
+}
+
+
+bool Foam::coagulation::cellGas::update()
+{
+    if
+    (
+        (T_ && T_->version() != TVersion_)
+     || (p_ && p_->version() != pVersion_)
+    )
+    {
+        makeGas();
+        return true;
+    }
+    return false;
 }
 
 

@@ -79,6 +79,25 @@ gravitationalSettling
     const coag::GravitationalSettlingKernel& layout =
         static_cast<const coag::GravitationalSettlingKernel&>(core());
 
+    makeCellKernels();
+
+    const Pair<scalar> lambda = gas_.meanFreePathRange();
+    Info<< "    collision efficiency " << layout.efficiency() << ", g "
+        << layout.g() << " m/s2, particle density "
+        << layout.material().density << " kg/m3, mass unit "
+        << layout.material().massUnit << " kg, mean free path from "
+        << lambda.first() << " to " << lambda.second() << " m" << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::coagulation::coagulationKernels::gravitationalSettling::
+makeCellKernels()
+{
+    const coag::GravitationalSettlingKernel& layout =
+        static_cast<const coag::GravitationalSettlingKernel&>(core());
+    cellKernels().clear();
     cellKernels().reserve(gas_.size());
     for (label celli = 0; celli < gas_.size(); ++celli)
     {
@@ -91,13 +110,17 @@ gravitationalSettling
             )
         );
     }
+}
 
-    const Pair<scalar> lambda = gas_.meanFreePathRange();
-    Info<< "    collision efficiency " << layout.efficiency() << ", g "
-        << layout.g() << " m/s2, particle density "
-        << layout.material().density << " kg/m3, mass unit "
-        << layout.material().massUnit << " kg, mean free path from "
-        << lambda.first() << " to " << lambda.second() << " m" << endl;
+
+bool Foam::coagulation::coagulationKernels::gravitationalSettling::correct()
+{
+    if (gas_.update())
+    {
+        makeCellKernels();
+        return true;
+    }
+    return false;
 }
 
 

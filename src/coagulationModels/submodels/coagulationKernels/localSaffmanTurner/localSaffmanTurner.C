@@ -134,68 +134,98 @@ Foam::coagulation::coagulationKernels::localSaffmanTurner::localSaffmanTurner
     ),
     epsilon_
     (
-        caseChecks::cellField
+        flowFields::of(mesh).cellField
         (
             dict,
             modelName,
             "epsilon",
             dict.getOrDefault<word>("epsilon", "epsilon"),
-            mesh,
             dimensionSet(0, 2, -3, 0, 0),
             true
         )
     ),
-    nu_()
+    nu_(nullptr),
+    nu_uniform_(0),
+    dictName_(dict.name()),
+    epsilonVersion_(-1),
+    nuVersion_(-1)
 {
     // 'nu': a field's name, or a value (with or without dimensions)
-    scalar nu = 0;
     if (dict.found("nu") && dict.lookup("nu")[0].isWord())
     {
-        nu_ = caseChecks::cellField
+        nu_ = &flowFields::of(mesh).cellField
         (
             dict,
             modelName,
             "nu",
             dict.get<word>("nu"),
-            mesh,
             dimViscosity,
             true
         );
         Info<< "    nu from field " << nu_->name() << ": "
-            << gMin(nu_->primitiveField()) << " to "
-            << gMax(nu_->primitiveField()) << endl;
+            << gMin((*nu_)().primitiveField()) << " to "
+            << gMax((*nu_)().primitiveField()) << endl;
     }
     else
     {
-        nu = uniformNu(dict, mesh);
+        nu_uniform_ = uniformNu(dict, mesh);
     }
 
-    const scalarField& epsilon = epsilon_->primitiveField();
+    Info<< "    epsilon from field " << epsilon_.name() << ": "
+        << gMin(epsilon_().primitiveField()) << " to "
+        << gMax(epsilon_().primitiveField()) << endl;
+    const Pair<scalar> K0range = makeCellKernels();
+    Info<< "    K0 = coefficient sqrt(epsilon/nu) from "
+        << returnReduce(K0range.first(), minOp<scalar>()) << " to "
+        << returnReduce(K0range.second(), maxOp<scalar>()) << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::Pair<Foam::scalar>
+Foam::coagulation::coagulationKernels::localSaffmanTurner::makeCellKernels()
+{
+    const scalarField& epsilon = epsilon_().primitiveField();
+    cellKernels().clear();
     cellKernels().reserve(epsilon.size());
     scalar lowest = GREAT, highest = 0;
     forAll(epsilon, celli)
     {
-        const scalar nuc = nu_ ? nu_->primitiveField()[celli] : nu;
+        const scalar nuc = nu_ ? (*nu_)().primitiveField()[celli] : nu_uniform_;
         const scalar K0c = K0()*std::sqrt(epsilon[celli]/nuc);
         if (!(K0c > 0) || !std::isfinite(K0c))
         {
-            FatalIOErrorInFunction(dict)
-                << "The " << modelName << " in " << dict.name() << " gives "
+            FatalErrorInFunction
+                << "The " << modelName << " in " << dictName_ << " gives "
                 << "cell " << celli << " the prefactor coefficient"
                 << " sqrt(epsilon/nu) = " << K0c << " (epsilon " << epsilon[celli]
-                << ", nu " << nuc << "): it must be positive and finite"
-                << nl << exit(FatalIOError);
+                << ", nu " << nuc << ") at t = " << epsilon_().time().value()
+                << ": it must be positive and finite" << nl << exit(FatalError);
         }
         lowest = min(lowest, K0c);
         highest = max(highest, K0c);
         cellKernels().push_back(coag::makeKernel("saffmanTurner", K0c));
     }
+    epsilonVersion_ = epsilon_.version();
+    nuVersion_ = nu_ ? nu_->version() : 0;
 
-    Info<< "    epsilon from field " << epsilon_->name() << ": "
-        << gMin(epsilon) << " to " << gMax(epsilon) << nl
-        << "    K0 = coefficient sqrt(epsilon/nu) from "
-        << returnReduce(lowest, minOp<scalar>()) << " to "
-        << returnReduce(highest, maxOp<scalar>()) << endl;
+    return Pair<scalar>(lowest, highest);
+}
+
+
+bool Foam::coagulation::coagulationKernels::localSaffmanTurner::correct()
+{
+    if
+    (
+        epsilon_.version() != epsilonVersion_
+     || (nu_ && nu_->version() != nuVersion_)
+    )
+    {
+        makeCellKernels();
+        return true;
+    }
+    return false;
 }
 
 

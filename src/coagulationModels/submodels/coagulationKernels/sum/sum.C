@@ -144,4 +144,26 @@ Foam::coagulation::coagulationKernels::sum::sum
 }
 
 
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::coagulation::coagulationKernels::sum::correct()
+{
+    bool changed = false;
+    for (coagulationKernel& part : parts_)
+    {
+        changed = part.correct() || changed;
+    }
+    if (changed)
+    {
+        const label nCells = label(cellKernels().size());
+        cellKernels().clear();
+        for (label celli = 0; celli < nCells; ++celli)
+        {
+            cellKernels().push_back(sumOf(parts_, celli));
+        }
+    }
+    return changed;
+}
+
+
 // ************************************************************************* //

@@ -35,37 +35,37 @@ Foam::coagulation::dispersionModels::turbulentDispersion::turbulentDispersion
 )
 :
     dispersionModel(mesh),
-    nut_(),
+    nut_
+    (
+        (
+            caseChecks::keywords
+            (
+                dict, {"type", "Sct", "nut", "drift", "Brownian"}
+            ),
+            flowFields::of(mesh).cellField
+            (
+                dict,
+                "dispersion model " + typeName,
+                "nut",
+                dict.getOrDefault<word>("nut", "nut"),
+                dimViscosity,
+                false
+            )
+        )
+    ),
+    Sct_(caseChecks::positive(dict, "Sct")),
+    nutVersion_(-1),
     cellD_(),
     pointD_(),
     drift_(dict.getOrDefault<bool>("drift", true)),
     brownian_(dict.found("Brownian")),
     gas_()
 {
-    caseChecks::keywords(dict, {"type", "Sct", "nut", "drift", "Brownian"});
-    const scalar Sct = caseChecks::positive(dict, "Sct");
     if (brownian_)
     {
         gas_ = readBrownianGas(dict.subDict("Brownian"));
     }
-
-    // The turbulent viscosity of the start time, as the flow solver wrote it
-    // (written again with every time, so that a restart finds it)
-    nut_ = caseChecks::cellField
-    (
-        dict,
-        "dispersion model " + typeName,
-        "nut",
-        dict.getOrDefault<word>("nut", "nut"),
-        mesh,
-        dimViscosity,
-        false
-    );
-    const volScalarField& nut = *nut_;
-
-    const volScalarField D("Dt", nut/Sct);
-    cellD_ = D.primitiveField();
-    pointD_ = volPointInterpolation::New(mesh).interpolate(D)().primitiveField();
+    makeD();
 
     Info<< "    turbulent diffusivity nut/Sct in [" << gMin(cellD_) << ", "
         << gMax(cellD_) << "] m^2/s, drift " << (drift_ ? "on" : "off")
@@ -73,7 +73,30 @@ Foam::coagulation::dispersionModels::turbulentDispersion::turbulentDispersion
 }
 
 
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::coagulation::dispersionModels::turbulentDispersion::makeD()
+{
+    const volScalarField D("Dt", nut_()/Sct_);
+    cellD_ = D.primitiveField();
+    pointD_ =
+        volPointInterpolation::New(mesh_).interpolate(D)().primitiveField();
+    nutVersion_ = nut_.version();
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::coagulation::dispersionModels::turbulentDispersion::correct()
+{
+    if (nut_.version() != nutVersion_)
+    {
+        makeD();
+        return true;
+    }
+    return false;
+}
+
 
 Foam::scalar
 Foam::coagulation::dispersionModels::turbulentDispersion::diffusivity

@@ -36,18 +36,18 @@ Foam::coagulation::inceptionModels::field::field
     inceptionModel(dict, particleWeight, {"field"}, false),
     rate_
     (
-        caseChecks::cellField
+        flowFields::of(mesh).cellField
         (
             dict,
             "inception model 'field'",
             "field",
             dict.get<word>("field"),
-            mesh,
             dimensionSet(0, -3, -1, 0, 0),
             false
         )
     ),
-    cellRates_(rate_->primitiveField())
+    cellRates_(rate_().primitiveField()),
+    version_(rate_.version())
 {
     setRate(gMax(cellRates_));
 
@@ -56,7 +56,7 @@ Foam::coagulation::inceptionModels::field::field
     {
         nCells += incepts(celli);
     }
-    Info<< "Inception rate from field " << rate_->name() << ": "
+    Info<< "Inception rate from field " << rate_.name() << ": "
         << gMin(cellRates_) << " to " << gMax(cellRates_)
         << " per unit volume and time, "
         << returnReduce(nCells, sumOp<label>()) << " cells with a rate > 0"

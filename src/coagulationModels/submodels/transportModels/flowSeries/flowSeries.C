@@ -54,6 +54,7 @@ Foam::coagulation::flowSeries::flowSeries
 )
 :
     mesh_(mesh),
+    dict_(dict),
     case_(dict.get<fileName>("flowSeries")),
     times_()
 {
@@ -165,17 +166,12 @@ Foam::coagulation::flowSeries::flowSeries
                 << nl << exit(FatalIOError);
         }
     }
-    for (const instant& t : times_)
+    if (!holds("U", "transport"))
     {
-        if (!isFile(case_/t.name()/"U") && !isFile(case_/t.name()/"U.gz"))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Entry 'flowSeries' in " << dict.name() << ": the flow"
-                << " case's time " << case_/t.name() << " has no U: the"
-                << " series has a gap between " << times_.first().name()
-                << " and " << times_.last().name() << nl
-                << exit(FatalIOError);
-        }
+        FatalIOErrorInFunction(dict)
+            << "Entry 'flowSeries' in " << dict.name() << ": the flow case "
+            << case_ << " has no U in its written times " << times_.first().name()
+            << " to " << times_.last().name() << nl << exit(FatalIOError);
     }
     Info<< "Transport: the velocity of the flow case " << case_ << ", "
         << times_.size() << " written times from " << times_.first().name()
@@ -186,11 +182,49 @@ Foam::coagulation::flowSeries::flowSeries
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::coagulation::flowSeries::set(volVectorField& U, const scalar t)
+bool Foam::coagulation::flowSeries::holds
+(
+    const word& name,
+    const word& reader
+) const
+{
+    const dictionary& dict = dict_;
+    label n = 0;
+    for (const instant& t : times_)
+    {
+        n += isFile(case_/t.name()/name) || isFile(case_/t.name()/name + ".gz");
+    }
+    if (n > 0 && n < times_.size())
+    {
+        for (const instant& t : times_)
+        {
+            if (!isFile(case_/t.name()/name) && !isFile(case_/t.name()/name + ".gz"))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Entry 'flowSeries' in " << dict.name() << ": the flow"
+                    << " case's time " << case_/t.name() << " has no " << name
+                    << " (read by the " << reader << "): the series has a gap"
+                    << " between "
+                    << times_.first().name() << " and "
+                    << times_.last().name() << nl << exit(FatalIOError);
+            }
+        }
+    }
+    return n > 0;
+}
+
+
+void Foam::coagulation::flowSeries::bracket
+(
+    const scalar t,
+    label& a,
+    label& b,
+    scalar& theta
+) const
 {
     // The written times a <= t <= b around t (a == b at a written time)
     const scalar small = 1e-6*mesh_.time().deltaTValue();
-    label a = -1;
+    a = -1;
     for (label i = times_.size() - 1; i >= 0; --i)
     {
         if (times_[i].value() <= t + small)
@@ -199,7 +233,7 @@ void Foam::coagulation::flowSeries::set(volVectorField& U, const scalar t)
             break;
         }
     }
-    label b = a;
+    b = a;
     if (a >= 0 && times_[a].value() < t - small)
     {
         b = a + 1;
@@ -211,6 +245,18 @@ void Foam::coagulation::flowSeries::set(volVectorField& U, const scalar t)
             << " around t = " << t << " (it covers " << times_.first().name()
             << " to " << times_.last().name() << ")" << nl << exit(FatalError);
     }
+    theta =
+        b == a
+      ? 0
+      : (t - times_[a].value())/(times_[b].value() - times_[a].value());
+}
+
+
+void Foam::coagulation::flowSeries::set(volVectorField& U, const scalar t)
+{
+    label a = -1, b = -1;
+    scalar theta = 0;
+    bracket(t, a, b, theta);
 
     if (a != a_ || b != b_)
     {
@@ -239,8 +285,6 @@ void Foam::coagulation::flowSeries::set(volVectorField& U, const scalar t)
     else
     {
         const volVectorField& Ub = *Ub_;
-        const scalar theta =
-            (t - times_[a].value())/(times_[b].value() - times_[a].value());
         U.primitiveFieldRef() =
             Ua.primitiveField()
           + theta*(Ub.primitiveField() - Ua.primitiveField());

@@ -8,6 +8,7 @@
 #include "frozenFlow.H"
 #include "coagulationCloud.H"
 #include "caseChecks.H"
+#include "flowFields.H"
 #include "registerSwitch.H"
 #include "interpolation.H"
 #include "processorPolyPatch.H"
@@ -61,19 +62,9 @@ Foam::coagulation::transportModels::frozenFlow::frozenFlow
     (
         dict, {"type", "interpolationSchemes", "maxCo", "flowSeries"}
     );
-    if (dict.found("flowSeries"))
-    {
-        if (cloud.liveFlow())
-        {
-            FatalIOErrorInFunction(dict)
-                << "Entry 'flowSeries' in " << dict.name() << " is for"
-                << " coagulationFoam: inside a flow solver (the"
-                << " coagulationCloud function object) the particles move"
-                << " with the solver's velocity." << nl
-                << "    Remove the entry" << nl << exit(FatalIOError);
-        }
-        series_.reset(new flowSeries(dict, cloud.mesh()));
-    }
+    // A flow series (its 'flowSeries' entry) is read by the cloud's
+    // flowFields, with the submodels' fields
+    series_ = flowFields::of(cloud.mesh()).series();
 
     // The velocity's interpolation, as a KinematicCloud's
     // solution/interpolationSchemes names it

@@ -1,0 +1,371 @@
+/*---------------------------------------------------------------------------*\
+  coagulationFoam: weighted stochastic particles coupled to OpenFOAM
+  Copyright (C) 2025-2026 the coagulationFoam authors
+  SPDX-License-Identifier: GPL-3.0-or-later (see COPYING); links OpenFOAM,
+  which is GPL-3.0-or-later too
+\*---------------------------------------------------------------------------*/
+
+#include "flowFields.H"
+#include "caseChecks.H"
+#include "Time.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace coagulation
+{
+    defineTypeNameAndDebug(flowFields, 0);
+}
+}
+
+const Foam::Enum<Foam::coagulation::flowFields::source>
+Foam::coagulation::flowFields::sourceNames
+({
+    { source::frozen, "frozen" },
+    { source::series, "series" },
+    { source::live, "live" }
+});
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::coagulation::flowFields::field::field
+(
+    const word& name,
+    const dimensionSet& dims,
+    const bool positive,
+    const word& model,
+    const dictionary& dict,
+    const source src
+)
+:
+    name_(name),
+    dims_(dims),
+    positive_(positive),
+    model_(model),
+    dict_(&dict),
+    source_(src)
+{}
+
+
+Foam::coagulation::flowFields::flowFields
+(
+    const fvMesh& mesh,
+    const dictionary& transportDict,
+    const bool live
+)
+:
+    regIOobject
+    (
+        IOobject
+        (
+            typeName,
+            mesh.time().constant(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE
+        )
+    ),
+    mesh_(mesh),
+    source_(live ? source::live : source::frozen),
+    series_(),
+    fields_(),
+    t_(mesh.time().value())
+{
+    if (transportDict.found("flowSeries"))
+    {
+        if (live)
+        {
+            FatalIOErrorInFunction(transportDict)
+                << "Entry 'flowSeries' in " << transportDict.name() << " is"
+                << " for coagulationFoam: inside a flow solver (the"
+                << " coagulationCloud function object) the particles move"
+                << " with the solver's velocity." << nl
+                << "    Remove the entry" << nl << exit(FatalIOError);
+        }
+        series_.reset(new flowSeries(transportDict, mesh));
+        source_ = source::series;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
+
+Foam::coagulation::flowFields& Foam::coagulation::flowFields::of
+(
+    const fvMesh& mesh
+)
+{
+    return mesh.lookupObjectRef<flowFields>(typeName);
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::coagulation::flowFields::checkValues
+(
+    const field& f,
+    const Foam::scalarField& values,
+    const string& from
+) const
+{
+    forAll(values, celli)
+    {
+        const scalar v = values[celli];
+        if (!std::isfinite(v) || !(v >= 0) || (f.positive_ && !(v > 0)))
+        {
+            FatalErrorInFunction
+                << "Field '" << f.name_ << "' (" << from.c_str() << "), read"
+                << " by the " << f.model_ << " of " << f.dict_->name()
+                << ", has the "
+                << (std::isfinite(v) ? (v < 0 ? "negative " : "") : "non-finite ")
+                << "value " << v << " in cell " << celli << " at t = "
+                << mesh_.time().value() << "; it must be "
+                << (f.positive_ ? "positive" : "finite and not negative")
+                << " in every cell" << nl << exit(FatalError);
+        }
+    }
+}
+
+
+void Foam::coagulation::flowFields::checkDimensions
+(
+    const field& f,
+    const volScalarField& values
+) const
+{
+    if (values.dimensions() != f.dims_)
+    {
+        FatalIOErrorInFunction(*f.dict_)
+            << "Field '" << f.name_ << "' (" << values.objectPath() << "),"
+            << " read by the " << f.model_ << " of " << f.dict_->name()
+            << ", has dimensions " << values.dimensions() << "; it must have "
+            << f.dims_ << nl << exit(FatalIOError);
+    }
+}
+
+
+Foam::autoPtr<Foam::volScalarField> Foam::coagulation::flowFields::readSeries
+(
+    const field& f,
+    const label i
+) const
+{
+    autoPtr<volScalarField> values
+    (
+        caseChecks::withTrapsHeld
+        (
+            [&]()
+            {
+                return autoPtr<volScalarField>::New
+                (
+                    IOobject
+                    (
+                        f.name_,
+                        series_->timePath(i),
+                        mesh_,
+                        IOobject::MUST_READ,
+                        IOobject::NO_WRITE,
+                        false
+                    ),
+                    mesh_
+                );
+            }
+        )
+    );
+    checkDimensions(f, *values);
+    checkValues(f, values->primitiveField(), values->objectPath());
+    return values;
+}
+
+
+bool Foam::coagulation::flowFields::set(field& f, const scalar t)
+{
+    volScalarField& values = *f.values_;
+    Foam::scalarField next;
+    string from;
+
+    if (f.source_ == source::frozen)
+    {
+        return false;
+    }
+    else if (f.source_ == source::series)
+    {
+        label a = -1, b = -1;
+        scalar theta = 0;
+        series_->bracket(t, a, b, theta);
+        if (a != f.a_ || b != f.b_)
+        {
+            if (a == f.b_ && f.fb_)
+            {
+                f.fa_ = std::move(f.fb_);
+            }
+            else
+            {
+                f.fa_ = readSeries(f, a);
+            }
+            f.fb_ = (b == a) ? autoPtr<volScalarField>() : readSeries(f, b);
+            f.a_ = a;
+            f.b_ = b;
+        }
+        const Foam::scalarField& fa = f.fa_->primitiveField();
+        if (b == a)
+        {
+            next = fa;
+        }
+        else
+        {
+            next = fa + theta*(f.fb_->primitiveField() - fa);
+        }
+    }
+    else
+    {
+        // The solver's field now (the end of its step) and, where it keeps
+        // it, at its old time: linear in time between them
+        const volScalarField& now =
+            mesh_.lookupObject<volScalarField>(f.name_);
+        const scalar tNow = mesh_.time().value();
+        const scalar dt = mesh_.time().deltaTValue();
+        const scalar theta = min(max((t - (tNow - dt))/dt, scalar(0)), scalar(1));
+        if (now.nOldTimes() > 0 && theta < 1)
+        {
+            const Foam::scalarField& old = now.oldTime().primitiveField();
+            next = old + theta*(now.primitiveField() - old);
+        }
+        else
+        {
+            next = now.primitiveField();
+        }
+        from = "the flow solver's, " + now.objectPath();
+    }
+
+    if (next == values.primitiveField())
+    {
+        return false;
+    }
+    if (f.source_ == source::live)
+    {
+        checkValues(f, next, from);
+    }
+    values.primitiveFieldRef() = next;
+    ++f.version_;
+    return true;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+const Foam::coagulation::flowFields::field&
+Foam::coagulation::flowFields::cellField
+(
+    const dictionary& dict,
+    const word& model,
+    const word& entry,
+    const word& fieldName,
+    const dimensionSet& dims,
+    const bool positive
+)
+{
+    for (field& f : fields_)
+    {
+        if (f.name_ == fieldName)
+        {
+            if (f.dims_ != dims)
+            {
+                FatalIOErrorInFunction(dict)
+                    << "The " << model << " (" << dict.name() << ") reads the"
+                    << " field '" << fieldName << "' (entry '" << entry
+                    << "') with dimensions " << dims << ", the " << f.model_
+                    << " with " << f.dims_ << nl << exit(FatalIOError);
+            }
+            f.positive_ = f.positive_ || positive;
+            checkValues(f, f().primitiveField(), f().objectPath());
+            return f;
+        }
+    }
+
+    // A series field that no written time of the flow case holds is frozen
+    source src = source_;
+    if (src == source::series && !series_->holds(fieldName, model))
+    {
+        src = source::frozen;
+        Info<< "    field " << fieldName << ": not in the flow series, read"
+            << " from the start time and held" << endl;
+    }
+
+    field* f = new field(fieldName, dims, positive, model, dict, src);
+    fields_.append(f);
+
+    if (src == source::frozen)
+    {
+        f->values_ = caseChecks::cellField
+        (
+            dict, model, entry, fieldName, mesh_, dims, positive
+        );
+        return *f;
+    }
+
+    if (src == source::live)
+    {
+        const volScalarField* now =
+            mesh_.findObject<volScalarField>(fieldName);
+        if (!now)
+        {
+            FatalIOErrorInFunction(dict)
+                << "The " << model << " (" << dict.name() << ") reads the"
+                << " field '" << fieldName << "' (entry '" << entry << "'),"
+                << " which the flow solver does not register: inside a flow"
+                << " solver the cloud takes its fields from the solver at"
+                << " every step." << nl << "    The solver's fields: "
+                << mesh_.sortedNames<volScalarField>() << nl
+                << "    Name one of them, or read the field from the time"
+                << " folders with a readFields function object listed before"
+                << " the cloud" << nl << exit(FatalIOError);
+        }
+        checkDimensions(*f, *now);
+        checkValues
+        (
+            *f, now->primitiveField(), "the flow solver's, " + now->objectPath()
+        );
+        f->values_.reset
+        (
+            new volScalarField
+            (
+                IOobject
+                (
+                    fieldName + ":coagulation",
+                    mesh_.time().timeName(),
+                    mesh_,
+                    IOobject::NO_READ,
+                    IOobject::NO_WRITE,
+                    false
+                ),
+                *now
+            )
+        );
+    }
+    else
+    {
+        label a = -1, b = -1;
+        scalar theta = 0;
+        series_->bracket(t_, a, b, theta);
+        f->values_ = readSeries(*f, a);
+        f->values_->rename(fieldName + ":coagulation");
+    }
+    set(*f, t_);
+    return *f;
+}
+
+
+void Foam::coagulation::flowFields::update(const scalar t)
+{
+    t_ = t;
+    for (field& f : fields_)
+    {
+        set(f, t);
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,213 @@
+#!/bin/bash
+# SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
+# The submodels' cell fields as they change in time: a closed box (the constant-kernel
+# duct's mesh, no flow, no inflow) whose inception rate, the field T of scalarTransportFoam,
+# grows as r0 + b t by an fvOptions source, so that M0..M2 are the solutions of the closed
+# moment equations with that rate (rampBox.py):
+#  1. the coagulationCloud function object inside scalarTransportFoam takes the solver's T at
+#     every step (between its old and new values): the exact moments within intervals; the
+#     solver's write times are the only time folders, each marked complete;
+#  2. coagulationFoam, which reads T once from the start time (frozen), misses the ramp: the
+#     same check fails;
+#  3. coagulationFoam on the written times of run 1 (transport flowSeries) reads T from
+#     them, linear in time: the exact moments;
+#  4. a field the solver does not register (the function object) and a flow series with a
+#     time that lacks T are FatalIOErrors naming the field and the folder.
+. "$(dirname "$0")/caseLib.sh"
+r0=3e8
+b=6e9
+check() { PYTHONPATH="$COAGULATIONFOAM_DIR/src/python${PYTHONPATH:+:$PYTHONPATH}" \
+    "$COAGULATIONFOAM_PYTHON" "$testsDir/rampBox.py" "$1" "$r0" "$b"; }
+
+# rampCase dir: the closed box with inception from the field T, 0 <= t <= 0.1
+rampCase()
+{
+    local c
+    c=$(newCase constantKernelDuct "$1")
+    sed -i 's/uniform (1 0 0)/uniform (0 0 0)/g' "$c/0/U"
+    cat > "$c/0/T" <<DICT
+FoamFile { version 2.0; format ascii; class volScalarField; object T; }
+dimensions      [0 -3 -1 0 0 0 0];
+internalField   uniform $r0;
+boundaryField
+{
+    inlet { type zeroGradient; }
+    outlet { type zeroGradient; }
+    sides { type empty; }
+}
+DICT
+    cat > "$c/constant/transportProperties" <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object transportProperties; }
+DT 0;
+DICT
+    cat > "$c/system/fvOptions" <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; object fvOptions; }
+ramp
+{
+    type            scalarSemiImplicitSource;
+    selectionMode   all;
+    volumeMode      specific;
+    injectionRateSuSp { T ($b 0); }
+}
+DICT
+    foamDictionary -case "$c" "$c/system/fvSchemes" -entry divSchemes/"div(phi,T)" \
+        -add "Gauss upwind" > /dev/null
+    foamDictionary -case "$c" "$c/system/fvSolution" -entry solvers/T \
+        -add "{ solver PBiCGStab; preconditioner DILU; tolerance 1e-14; relTol 0; }" > /dev/null
+    foamDictionary -case "$c" "$c/system/fvSolution" -entry SIMPLE \
+        -add "{ nNonOrthogonalCorrectors 0; }" > /dev/null
+    foamDictionary -case "$c" "$c/constant/coagulationProperties" -entry inflow -remove > /dev/null
+    setEntry "$c" constant/coagulationProperties inception "{ type field; field T; mass 1; }"
+    setEntry "$c" constant/coagulationProperties sampling "{ tRelax 0; sampleInterval 5e-3; }"
+    setEntry "$c" constant/coagulationProperties splitting Strang
+    setEntry "$c" system/controlDict deltaT 1e-3
+    setEntry "$c" system/controlDict endTime 0.1
+    setEntry "$c" system/controlDict writeInterval 0.01
+    setEntry "$c" system/controlDict writeFormat ascii
+    foamDictionary -case "$c" "$c/system/controlDict" -entry functions/momentAverages \
+        -remove > /dev/null
+    echo "$c"
+}
+
+# fo case: the function object in the case's controlDict, run by scalarTransportFoam
+fo()
+{
+    setEntry "$1" system/controlDict application scalarTransportFoam
+    foamDictionary -case "$1" "$1/system/controlDict" -entry functions/particles \
+        -add "{ type coagulationCloud; libs (coagulationModels); }" > /dev/null
+}
+
+# 1. The function object: the solver's T at every step
+live=$(rampCase fo_rampLive)
+frozen=$(rampCase fo_rampFrozen)
+fo "$live"
+(cd "$live" && runApplication scalarTransportFoam) || fail "scalarTransportFoam"
+checkBalance "$live/log.scalarTransportFoam"
+awk '/^internalField/ { on = 1; next } on == 1 && /^\(/ { on = 2; next }
+     on == 2 && /^\)/ { exit !(n == 50) }
+     on == 2 { n++; if ($1 < 8.99999e8 || $1 > 9.00001e8) exit 1 }' \
+    "$live/0.1/T" || fail "T at 0.1 is not r0 + b t = 9e8 in the 50 cells"
+# the solver's write times only, each marked complete by the cloud
+times=$(cd "$live" && foamListTimes -withZero | tr '\n' ' ')
+[ "$times" = "0 0.01 0.02 0.03 0.04 0.05 0.06 0.07 0.08 0.09 0.1 " ] \
+    || fail "time folders other than the write times: $times"
+for t in $times; do
+    [ "$t" = 0 ] || [ -f "$live/$t/uniform/coagulationCloudComplete" ] \
+        || fail "no completion marker in $live/$t"
+done
+check "$live" || fail "the function object's moments with the solver's T are not the exact ones"
+echo "ok: the function object follows the solver's T (the inception rate) step by step"
+
+# 2. Frozen: T read once, the ramp missed (the check must fail)
+(cd "$frozen" && runApplication coagulationFoam) || fail "coagulationFoam (frozen)"
+set +e
+check "$frozen"
+rc=$?
+set -e
+[ "$rc" = 3 ] || fail "the frozen rate passed the ramp's check (exit $rc)"
+echo "ok: with T frozen at the start the ramp's check fails, as it must"
+
+# 3. coagulationFoam on the function object run's written times (T not in its own 0/)
+series=$(rampCase fo_rampSeries)
+rm "$series/0/T"
+foamDictionary -case "$series" "$series/constant/coagulationProperties" -entry transport \
+    -add "{ type frozenFlow; flowSeries \"../fo_rampLive\"; }" > /dev/null
+(cd "$series" && runApplication coagulationFoam) || fail "coagulationFoam (flow series)"
+checkBalance "$series/log.coagulationFoam"
+check "$series" || fail "the moments with T of the flow series are not the exact ones"
+echo "ok: coagulationFoam reads T from the flow series' written times"
+
+# 4. Bad input
+bad=$(rampCase fo_rampUnregistered)
+fo "$bad"
+setEntry "$bad" constant/coagulationProperties inception/field rate
+(cd "$bad" && scalarTransportFoam > log.scalarTransportFoam 2>&1) \
+    && fail "a field the solver does not register was accepted"
+grep -q "reads the field 'rate' (entry 'field'), which the flow solver does not register" \
+    "$bad/log.scalarTransportFoam" || fail "no FatalIOError naming the unregistered field"
+grep -q "FOAM FATAL IO ERROR" "$bad/log.scalarTransportFoam" || fail "not a FatalIOError"
+echo "ok: a field the solver does not register: FatalIOError naming it"
+
+gap=$(rampCase fo_rampGap)
+rm "$gap/0/T"
+rm -rf "$workDir/fo_rampLiveGap"
+cp -r "$live" "$workDir/fo_rampLiveGap"
+rm "$workDir/fo_rampLiveGap/0.05/T"
+foamDictionary -case "$gap" "$gap/constant/coagulationProperties" -entry transport \
+    -add "{ type frozenFlow; flowSeries \"../fo_rampLiveGap\"; }" > /dev/null
+(cd "$gap" && coagulationFoam > log.coagulationFoam 2>&1) \
+    && fail "a flow series with a gap in T was accepted"
+grep -q "fo_rampLiveGap/0.05\" has no T (read by the inception model .field.): the series has a gap" \
+    "$gap/log.coagulationFoam" \
+    || fail "no FatalIOError naming the time without T"
+echo "ok: a flow series whose time 0.05 lacks T: FatalIOError naming the folder"
+
+# 5. A kernel of a field that changes in time: localSaffmanTurner in a closed box of
+#    monomers, epsilon(t) = eps0 (1 + 2t/tau) written by this script as a flow series
+#    (U = 0). The kernel is c(t) K, c = sqrt(epsilon/nu), so the run at T is the run with c
+#    held at its mean over [0, T], (int c dt)/T (time rescaled): the same moments within
+#    intervals; the run held at eps0 (the start's, frozen) differs
+eps0=1
+tau=0.05
+stCase()
+{
+    local c
+    c=$(newCase constantKernelDuct "$1")
+    sed -i 's/uniform (1 0 0)/uniform (0 0 0)/g' "$c/0/U"
+    foamDictionary -case "$c" "$c/constant/coagulationProperties" -entry inflow -remove > /dev/null
+    setEntry "$c" constant/coagulationProperties inception "{ rate 0; mass 1; }"
+    setEntry "$c" constant/coagulationProperties kernel \
+        "{ type localSaffmanTurner; coefficient 6e-11; epsilon epsilon; nu 1e-5; }"
+    foamDictionary -case "$c" "$c/constant/coagulationProperties" -entry initialPopulation \
+        -add "{ numberDensity 1.25e8; mass 1; }" > /dev/null
+    setEntry "$c" constant/coagulationProperties sampling "{ tRelax 0; sampleInterval 0.01; }"
+    setEntry "$c" system/controlDict deltaT 1e-3
+    setEntry "$c" system/controlDict endTime 0.1
+    setEntry "$c" system/controlDict writeInterval 0.1
+    foamDictionary -case "$c" "$c/system/controlDict" -entry functions/momentAverages \
+        -remove > /dev/null
+    echo "$c"
+}
+# epsilonFile case time value
+epsilonFile()
+{
+    mkdir -p "$1/$2"
+    cat > "$1/$2/epsilon" <<DICT
+FoamFile { version 2.0; format ascii; class volScalarField; object epsilon; }
+dimensions      [0 2 -3 0 0 0 0];
+internalField   uniform $3;
+boundaryField { inlet { type zeroGradient; } outlet { type zeroGradient; } sides { type empty; } }
+DICT
+}
+flow="$workDir/st_flow"
+rm -rf "$flow"
+mkdir -p "$flow/constant"
+stVarying=$(stCase st_varying)
+cp -r "$stVarying/constant/polyMesh" "$flow/constant/"
+for i in 0 1 2 3 4 5 6 7 8 9 10; do
+    t=$(awk -v i="$i" 'BEGIN { print i/100 }')
+    epsilonFile "$flow" "$t" "$(awk -v t="$t" -v e="$eps0" -v tau="$tau" 'BEGIN { printf "%.17g", e*(1 + 2*t/tau) }')"
+    cp "$stVarying/0/U" "$flow/$t/U"
+done
+foamDictionary -case "$stVarying" "$stVarying/constant/coagulationProperties" -entry transport \
+    -add "{ type frozenFlow; flowSeries \"../st_flow\"; }" > /dev/null
+# (int_0^T sqrt(1 + 2t/tau) dt / T)^2 eps0, T = 0.1
+epsMean=$(awk -v e="$eps0" -v tau="$tau" 'BEGIN { T = 0.1; m = tau/3*((1 + 2*T/tau)^1.5 - 1)/T; printf "%.17g", e*m*m }')
+stMean=$(stCase st_mean)
+epsilonFile "$stMean" 0 "$epsMean"
+stStart=$(stCase st_start)
+epsilonFile "$stStart" 0 "$eps0"
+for c in "$stVarying" "$stMean" "$stStart"; do
+    (cd "$c" && runApplication coagulationFoam) || fail "coagulationFoam in $c"
+    checkBalance "$c/log.coagulationFoam"
+done
+compare() { PYTHONPATH="$COAGULATIONFOAM_DIR/src/python${PYTHONPATH:+:$PYTHONPATH}" \
+    "$COAGULATIONFOAM_PYTHON" "$testsDir/compareRuns.py" "$1" "$2"; }
+compare "$stVarying" "$stMean" \
+    || fail "localSaffmanTurner on a varying epsilon is not the run at the mean rate"
+set +e
+compare "$stVarying" "$stStart"
+rc=$?
+set -e
+[ "$rc" = 3 ] || fail "the run held at the start's epsilon passed the comparison (exit $rc)"
+echo "ok: localSaffmanTurner follows epsilon of the flow series (time rescaling, epsilon mean $epsMean)"
