@@ -873,6 +873,11 @@ BUGS = {
              "    const fileName dir(mesh_.time().timePath()/\"uniform\");\n",
              "case_liveFields",
              "completion marker: written to the time now (a flow solver's next step), not the time written"),
+    "B160": (M + "submodels/dispersionModels/turbulentDispersion/turbulentDispersion.C",
+             "    if (nut_.version() != nutVersion_)\n    {\n        makeD();\n",
+             "    if (nut_.version() != nutVersion_)\n    {\n",
+             "case_liveFields",
+             "turbulent walk: D not made anew when nut changes (the start's nut throughout)"),
 }
 
 
