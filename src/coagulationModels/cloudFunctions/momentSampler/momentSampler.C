@@ -46,7 +46,13 @@ Foam::coagulation::cloudFunctions::momentSampler::momentSampler
     tRelax_ = caseChecks::nonNegative(dict, "tRelax");
     const scalar interval = dict.get<scalar>("sampleInterval");
     const scalar dt = runTime.deltaTValue();
-    stepsPerSample_ = caseChecks::stepsPer(dict, "sampleInterval", interval, dt);
+    // Samples of whole split steps (stepInterval time steps each)
+    stepsPerSample_ =
+        cloud.stepInterval()
+       *caseChecks::stepsPer
+        (
+            dict, "sampleInterval", interval, cloud.splitDeltaT()
+        );
 
     // A run that would take no sample is a mistake in the input: the first
     // sample is at the first step index past the start that is a multiple
@@ -144,7 +150,7 @@ void Foam::coagulation::cloudFunctions::momentSampler::setAttributes
     writer_->setAttribute("K0", cloud.kernel().K0());
     writer_->setAttribute("inceptionRate", cloud.inception().core().rate);
     writer_->setAttribute("seed", double(cloud.seeds().seed()));
-    writer_->setAttribute("splitDeltaT", dt);
+    writer_->setAttribute("splitDeltaT", cloud.splitDeltaT());
     writer_->setAttribute("sampleInterval", interval);
     writer_->setAttribute("tRelax", tRelax_);
     writer_->setAttribute("particleWeight", cloud.scaling().particleWeight());

@@ -243,9 +243,13 @@ Foam::coagulation::cloudFunctions::sizeDistribution::sizeDistribution
         dict.found("sampleInterval")
       ? caseChecks::positive(dict, "sampleInterval")
       : cloud.properties().subDict("sampling").get<scalar>("sampleInterval");
-    const scalar dt = runTime.deltaTValue();
+    // Samples of whole split steps (stepInterval time steps each)
     stepsPerSample_ =
-        caseChecks::stepsPer(dict, "sampleInterval", sampleInterval_, dt);
+        cloud.stepInterval()
+       *caseChecks::stepsPer
+        (
+            dict, "sampleInterval", sampleInterval_, cloud.splitDeltaT()
+        );
     if (timeStart_ >= runTime.endTime().value())
     {
         FatalIOErrorInFunction(dict)

@@ -382,19 +382,28 @@ Foam::scalar Foam::coagulation::caseChecks::maxCourant
 }
 
 
-void Foam::coagulation::caseChecks::courant(const volVectorField& U)
+void Foam::coagulation::caseChecks::courant
+(
+    const volVectorField& U,
+    const label stepInterval
+)
 {
     const Time& runTime = U.time();
     const scalar deltaT = runTime.deltaTValue();
-    const scalar Co = maxCourant(U, deltaT);
+    const scalar Co = maxCourant(U, stepInterval*deltaT);
 
     Info<< "Courant number of the split step: max " << Co << nl << endl;
 
     if (Co > 1 + 1e-9)
     {
+        const string steps =
+            stepInterval > 1
+          ? " (" + Foam::name(stepInterval) + " time steps a split step)"
+          : "";
         FatalIOErrorInFunction(runTime.controlDict())
             << "Entry 'deltaT' = " << deltaT << " in "
-            << runTime.controlDict().name() << " gives a Courant number of "
+            << runTime.controlDict().name() << steps.c_str()
+            << " gives a Courant number of "
             << Co << " > 1: particles would cross cells whose cell step they"
             << " never see, and inflow would skip the first cells." << nl
             << "    Set deltaT <= " << deltaT/Co << nl

@@ -59,13 +59,15 @@ Foam::coagulation::coagulationCloud::coagulationCloud
 (
     volVectorField& U,
     const word& cloudName,
-    const bool liveFlow
+    const bool liveFlow,
+    const label stepInterval
 )
 :
     Cloud<coagulationParticle>(U.mesh(), cloudName, false),
     mesh_(U.mesh()),
     U_(U),
     liveFlow_(liveFlow),
+    stepInterval_(stepInterval),
     properties_
     (
         IOobject
@@ -83,7 +85,7 @@ Foam::coagulation::coagulationCloud::coagulationCloud
     (
         properties_.subDict("statisticalWeight"), algorithmName_, mesh_
     ),
-    seeds_(properties_, mesh_.time()),
+    seeds_(properties_, mesh_.time(), stepInterval),
     ownFields_(),
     fields_(nullptr),
     kernel_(),
@@ -432,7 +434,7 @@ void Foam::coagulation::coagulationCloud::postStep()
 
 void Foam::coagulation::coagulationCloud::evolve()
 {
-    const scalar dt = mesh_.time().deltaTValue();
+    const scalar dt = splitDeltaT();
     const scalar t = mesh_.time().value();
 
     // Operator splitting over dt (Patterson & Wagner 2011, section 2) of

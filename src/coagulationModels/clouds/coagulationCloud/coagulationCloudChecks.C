@@ -560,7 +560,7 @@ void Foam::coagulation::coagulationCloud::checkFlow
 {
     caseChecks::velocity(U);
     caseChecks::emptyPatches(mesh_);
-    caseChecks::courant(U);
+    caseChecks::courant(U, stepInterval_);
     caseChecks::timeControls(mesh_.time());
 
     // Inflow asked for must find an inlet

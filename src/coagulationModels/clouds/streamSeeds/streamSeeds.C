@@ -14,10 +14,12 @@
 Foam::coagulation::streamSeeds::streamSeeds
 (
     const dictionary& dict,
-    const Time& time
+    const Time& time,
+    const label stepInterval
 )
 :
     time_(time),
+    stepInterval_(stepInterval),
     seed_(0)
 {
     const label seed = dict.get<label>("seed");
@@ -42,7 +44,7 @@ uint64_t Foam::coagulation::streamSeeds::operator()
     uint64_t s = coag::mix64(seed_);
     s = coag::mix64(s ^ uint64_t(Pstream::myProcNo()));
     s = coag::mix64(s ^ uint64_t(index));
-    s = coag::mix64(s ^ uint64_t(time_.timeIndex()));
+    s = coag::mix64(s ^ uint64_t(time_.timeIndex()/stepInterval_));
     s = coag::mix64(s ^ uint64_t(p));
     return s;
 }

@@ -59,6 +59,80 @@ void Foam::coagulation::coagulationCloudFunctionObject::checkTransient
 }
 
 
+void Foam::coagulation::coagulationCloudFunctionObject::checkStepInterval
+(
+    const dictionary& dict,
+    const label interval
+) const
+{
+    if (interval == 1)
+    {
+        return;
+    }
+
+    // The split steps end at the time indices that are multiples of the
+    // interval (OpenFOAM's timeStep control): the start, every write and
+    // the end must be among them, so that every written time holds the
+    // particles of that time and a restart continues the same steps
+    const dictionary& controlDict = time_.controlDict();
+    const scalar deltaT = time_.deltaTValue();
+    const word writeControl = controlDict.get<word>("writeControl");
+    const scalar writeInterval = controlDict.get<scalar>("writeInterval");
+    label writeSteps = -1;
+    if (writeControl == "timeStep")
+    {
+        writeSteps = label(std::round(writeInterval));
+    }
+    else if (writeControl == "runTime" || writeControl == "adjustableRunTime")
+    {
+        const scalar steps = std::round(writeInterval/deltaT);
+        if (mag(steps*deltaT - writeInterval) < 1e-6*writeInterval)
+        {
+            writeSteps = label(steps);
+        }
+    }
+    const scalar endSteps =
+        std::round((time_.endTime().value() - time_.startTime().value())/deltaT);
+    const label startIndex = time_.timeIndex();
+
+    string why;
+    if (writeSteps < 0 || writeSteps % interval != 0)
+    {
+        why =
+            "writeControl " + writeControl + " and writeInterval "
+          + Foam::name(writeInterval) + " in " + controlDict.name()
+          + " do not write every multiple of " + Foam::name(interval)
+          + " time steps of " + Foam::name(deltaT);
+    }
+    else if (endSteps > labelMax || label(endSteps) % interval != 0)
+    {
+        why =
+            "the run from " + time_.timeName() + " to endTime "
+          + Foam::name(time_.endTime().value()) + " is not a multiple of "
+          + Foam::name(interval) + " time steps of " + Foam::name(deltaT);
+    }
+    else if (startIndex % interval != 0)
+    {
+        why =
+            "the start time " + time_.timeName() + " has the time index "
+          + Foam::name(startIndex) + ", not a multiple of "
+          + Foam::name(interval);
+    }
+    if (!why.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'executeInterval' = " << interval << " of function"
+            << " object " << name() << " in " << dict.name() << ": "
+            << why.c_str() << ". The population's split steps end every "
+            << interval << " time steps, and every written time must hold"
+            << " the particles of that time." << nl
+            << "    Write (and end the run) at multiples of " << interval
+            << " time steps, or set executeInterval 1" << nl
+            << exit(FatalIOError);
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::coagulation::coagulationCloudFunctionObject::
@@ -100,20 +174,23 @@ bool Foam::coagulation::coagulationCloudFunctionObject::read
     }
     checkTransient(dict);
 
-    // Every execution is a split step over the solver's deltaT, and the end
-    // checks the balances: the function object runs at every time step to
-    // the end of the run
+    // Every execution is a split step over the time since the last one
+    // (executeInterval time steps), and the end checks the balances: the
+    // function object runs every executeInterval time steps to the end of
+    // the run
     const word control = dict.getOrDefault<word>("executeControl", "timeStep");
     const label interval = dict.getOrDefault<label>("executeInterval", 1);
-    if (control != "timeStep" || interval != 1)
+    if (control != "timeStep" || interval < 1)
     {
         FatalIOErrorInFunction(dict)
             << "Function object " << name() << " (type " << typeName
             << ") in " << dict.name() << " has executeControl " << control
             << " and executeInterval " << interval << ": the population makes"
-            << " a split step of every time step of the solver, so both must"
-            << " be left at timeStep and 1" << nl << exit(FatalIOError);
+            << " a split step every executeInterval time steps of the solver,"
+            << " so executeControl must be timeStep and executeInterval at"
+            << " least 1" << nl << exit(FatalIOError);
     }
+    checkStepInterval(dict, interval);
     if
     (
         dict.found("timeEnd")
@@ -152,7 +229,8 @@ bool Foam::coagulation::coagulationCloudFunctionObject::read
             (
                 mesh_.lookupObjectRef<volVectorField>(UName),
                 "coagulationCloud",
-                true
+                true,
+                interval
             )
         );
     }
@@ -200,6 +278,14 @@ bool Foam::coagulation::coagulationCloudFunctionObject::read
 bool Foam::coagulation::coagulationCloudFunctionObject::execute()
 {
     coagulationCloud& cloud = *cloud_;
+
+    // A split step ends at every multiple of the interval (OpenFOAM applies
+    // executeInterval only with an executeControl entry)
+    if (time_.timeIndex() % cloud.stepInterval() != 0)
+    {
+        return true;
+    }
+
     cloud.completeWrite();
     cloud.evolve();
     Log << type() << " " << name() << ": time " << time_.timeName()
