@@ -30,7 +30,7 @@ Foam::coagulation::flowFields::sourceNames
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::coagulation::flowFields::field::field
+Foam::coagulation::flowFields::flowField::flowField
 (
     const word& name,
     const dimensionSet& dims,
@@ -105,7 +105,7 @@ Foam::coagulation::flowFields& Foam::coagulation::flowFields::of
 
 void Foam::coagulation::flowFields::checkValues
 (
-    const field& f,
+    const flowField& f,
     const Foam::scalarField& values,
     const string& from
 ) const
@@ -131,7 +131,7 @@ void Foam::coagulation::flowFields::checkValues
 
 void Foam::coagulation::flowFields::checkDimensions
 (
-    const field& f,
+    const flowField& f,
     const volScalarField& values
 ) const
 {
@@ -148,7 +148,7 @@ void Foam::coagulation::flowFields::checkDimensions
 
 Foam::autoPtr<Foam::volScalarField> Foam::coagulation::flowFields::readSeries
 (
-    const field& f,
+    const flowField& f,
     const label i
 ) const
 {
@@ -180,7 +180,7 @@ Foam::autoPtr<Foam::volScalarField> Foam::coagulation::flowFields::readSeries
 }
 
 
-bool Foam::coagulation::flowFields::set(field& f, const scalar t)
+bool Foam::coagulation::flowFields::set(flowField& f, const scalar t)
 {
     volScalarField& values = *f.values_;
     Foam::scalarField next;
@@ -256,7 +256,7 @@ bool Foam::coagulation::flowFields::set(field& f, const scalar t)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-const Foam::coagulation::flowFields::field&
+const Foam::coagulation::flowFields::flowField&
 Foam::coagulation::flowFields::cellField
 (
     const dictionary& dict,
@@ -267,7 +267,7 @@ Foam::coagulation::flowFields::cellField
     const bool positive
 )
 {
-    for (field& f : fields_)
+    for (flowField& f : fields_)
     {
         if (f.name_ == fieldName)
         {
@@ -294,7 +294,7 @@ Foam::coagulation::flowFields::cellField
             << " from the start time and held" << endl;
     }
 
-    field* f = new field(fieldName, dims, positive, model, dict, src);
+    flowField* f = new flowField(fieldName, dims, positive, model, dict, src);
     fields_.append(f);
 
     if (src == source::frozen)
@@ -361,7 +361,7 @@ Foam::coagulation::flowFields::cellField
 void Foam::coagulation::flowFields::update(const scalar t)
 {
     t_ = t;
-    for (field& f : fields_)
+    for (flowField& f : fields_)
     {
         set(f, t);
     }

@@ -11,7 +11,7 @@
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-const Foam::coagulation::flowFields::field*
+const Foam::coagulation::flowFields::flowField*
 Foam::coagulation::cellGas::cellValues
 (
     const dictionary& dict,
@@ -27,7 +27,7 @@ Foam::coagulation::cellGas::cellValues
         uniform = caseChecks::positive(dict, key);
         return nullptr;
     }
-    const flowFields::field& f = flowFields::of(mesh).cellField
+    const flowFields::flowField& f = flowFields::of(mesh).cellField
     (
         dict, model, key, dict.getOrDefault<word>(key, key), dims, true
     );
