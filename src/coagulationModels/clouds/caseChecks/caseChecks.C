@@ -135,7 +135,7 @@ Foam::label Foam::coagulation::caseChecks::stepsPer
     {
         FatalIOErrorInFunction(dict)
             << "Entry '" << key << "' = " << interval << " in " << dict.name()
-            << " must be a positive multiple of deltaT = " << deltaT
+            << " must be a positive multiple of the split step " << deltaT
             << " (at most " << labelMax << " steps)" << nl
             << exit(FatalIOError);
     }

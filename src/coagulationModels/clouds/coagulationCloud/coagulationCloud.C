@@ -376,7 +376,7 @@ void Foam::coagulation::coagulationCloud::cellStep
 )
 {
     // The kernel's and the inception's fields at the middle of the step
-    fields_->update(tEnd - 0.5*dt);
+    fields_->update(tEnd - 0.5*dt, mesh_.time().value() - splitDeltaT());
     kernel_->correct();
     inception_->correct();
 
@@ -397,7 +397,7 @@ void Foam::coagulation::coagulationCloud::transport
     // The flow over the move (a frozen flow: unchanged), and the walk's
     // diffusivity
     transport_->setFlow(U_, tEnd - 0.5*dt);
-    fields_->update(tEnd - 0.5*dt);
+    fields_->update(tEnd - 0.5*dt, mesh_.time().value() - splitDeltaT());
     dispersion_->correct();
 
     transportModel::outflow out(mesh_.boundaryMesh().size());

@@ -115,7 +115,7 @@ void Foam::coagulation::flowFields::checkValues
         const scalar v = values[celli];
         if (!std::isfinite(v) || !(v >= 0) || (f.positive_ && !(v > 0)))
         {
-            FatalErrorInFunction
+            FatalIOErrorInFunction(*f.dict_)
                 << "Field '" << f.name_ << "' (" << from.c_str() << "), read"
                 << " by the " << f.model_ << " of " << f.dict_->name()
                 << ", has the "
@@ -123,7 +123,7 @@ void Foam::coagulation::flowFields::checkValues
                 << "value " << v << " in cell " << celli << " at t = "
                 << mesh_.time().value() << "; it must be "
                 << (f.positive_ ? "positive" : "finite and not negative")
-                << " in every cell" << nl << exit(FatalError);
+                << " in every cell" << nl << exit(FatalIOError);
         }
     }
 }
@@ -180,7 +180,12 @@ Foam::autoPtr<Foam::volScalarField> Foam::coagulation::flowFields::readSeries
 }
 
 
-bool Foam::coagulation::flowFields::set(flowField& f, const scalar t)
+bool Foam::coagulation::flowFields::set
+(
+    flowField& f,
+    const scalar t,
+    const scalar stepStart
+)
 {
     volScalarField& values = *f.values_;
     Foam::scalarField next;
@@ -221,17 +226,42 @@ bool Foam::coagulation::flowFields::set(flowField& f, const scalar t)
     }
     else
     {
-        // The solver's field now (the end of its step) and, where it keeps
-        // it, at its old time: linear in time between them
+        // The solver's field now (the end of the split step) and at the
+        // split step's start: linear in time between them
         const volScalarField& now =
             mesh_.lookupObject<volScalarField>(f.name_);
-        const scalar tNow = mesh_.time().value();
-        const scalar dt = mesh_.time().deltaTValue();
-        const scalar theta = min(max((t - (tNow - dt))/dt, scalar(0)), scalar(1));
-        if (now.nOldTimes() > 0 && theta < 1)
+        const Time& runTime = mesh_.time();
+        const scalar tNow = runTime.value();
+        const scalar small = 1e-6*runTime.deltaTValue();
+        if (runTime.timeIndex() != f.indexLast_)
         {
-            const Foam::scalarField& old = now.oldTime().primitiveField();
-            next = old + theta*(now.primitiveField() - old);
+            // A new split step: the values the last one ended with are
+            // this one's start
+            f.prev_.transfer(f.last_);
+            f.tPrev_ = f.tLast_;
+            f.last_ = now.primitiveField();
+            f.tLast_ = tNow;
+            f.indexLast_ = runTime.timeIndex();
+        }
+        const Foam::scalarField* start = nullptr;
+        if (f.prev_.size() == now.size() && mag(f.tPrev_ - stepStart) < small)
+        {
+            start = &f.prev_;
+        }
+        else if
+        (
+            now.nOldTimes() > 0
+         && mag(tNow - runTime.deltaTValue() - stepStart) < small
+        )
+        {
+            // (the first split step after a gap: the solver's old time)
+            start = &now.oldTime().primitiveField();
+        }
+        if (start && tNow - stepStart > small)
+        {
+            const scalar theta =
+                min(max((t - stepStart)/(tNow - stepStart), scalar(0)), scalar(1));
+            next = *start + theta*(now.primitiveField() - *start);
         }
         else
         {
@@ -240,7 +270,10 @@ bool Foam::coagulation::flowFields::set(flowField& f, const scalar t)
         from = "the flow solver's, " + now.objectPath();
     }
 
-    if (next == values.primitiveField())
+    // Changed on any processor: the versions, and so the submodels' remaking
+    // of their cell data (some of it collective: volPointInterpolation), go
+    // in step on every processor
+    if (!returnReduce(next != values.primitiveField(), orOp<bool>()))
     {
         return false;
     }
@@ -281,6 +314,19 @@ Foam::coagulation::flowFields::cellField
             }
             f.positive_ = f.positive_ || positive;
             checkValues(f, f().primitiveField(), f().objectPath());
+            // (a series' written times read so far, under the new sign)
+            for (const autoPtr<volScalarField>* written : {&f.fa_, &f.fb_})
+            {
+                if (*written)
+                {
+                    checkValues
+                    (
+                        f,
+                        (*written)->primitiveField(),
+                        (*written)->objectPath()
+                    );
+                }
+            }
             return f;
         }
     }
@@ -353,17 +399,28 @@ Foam::coagulation::flowFields::cellField
         f->values_ = readSeries(*f, a);
         f->values_->rename(fieldName + ":coagulation");
     }
-    set(*f, t_);
+    if (src == source::live)
+    {
+        // The values at the start, the first split step's start values
+        f->last_ = (*f)().primitiveField();
+        f->tLast_ = mesh_.time().value();
+        f->indexLast_ = mesh_.time().timeIndex();
+    }
+    set(*f, t_, t_);
     return *f;
 }
 
 
-void Foam::coagulation::flowFields::update(const scalar t)
+void Foam::coagulation::flowFields::update
+(
+    const scalar t,
+    const scalar stepStart
+)
 {
     t_ = t;
     for (flowField& f : fields_)
     {
-        set(f, t);
+        set(f, t, stepStart);
     }
 }
 

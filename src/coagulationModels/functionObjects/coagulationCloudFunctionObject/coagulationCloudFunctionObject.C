@@ -76,7 +76,8 @@ void Foam::coagulation::coagulationCloudFunctionObject::checkStepInterval
     // particles of that time and a restart continues the same steps
     const dictionary& controlDict = time_.controlDict();
     const scalar deltaT = time_.deltaTValue();
-    const word writeControl = controlDict.get<word>("writeControl");
+    const word writeControl =
+        controlDict.getOrDefault<word>("writeControl", "timeStep");
     const scalar writeInterval = controlDict.get<scalar>("writeInterval");
     label writeSteps = -1;
     if (writeControl == "timeStep")
@@ -91,9 +92,21 @@ void Foam::coagulation::coagulationCloudFunctionObject::checkStepInterval
             writeSteps = label(steps);
         }
     }
+    // (stopAt nextWrite, writeNow: endTime GREAT, the run ends at a write)
     const scalar endSteps =
-        std::round((time_.endTime().value() - time_.startTime().value())/deltaT);
+        time_.endTime().value() > 0.5*GREAT
+      ? 0
+      : std::round((time_.endTime().value() - time_.startTime().value())/deltaT);
     const label startIndex = time_.timeIndex();
+    // The first split step starts at the later of the start and timeStart
+    scalar startSteps = 0;
+    if (dict.found("timeStart"))
+    {
+        startSteps = std::round
+        (
+            max(dict.get<scalar>("timeStart") - time_.value(), scalar(0))/deltaT
+        );
+    }
 
     string why;
     if (writeSteps < 0 || writeSteps % interval != 0)
@@ -116,6 +129,14 @@ void Foam::coagulation::coagulationCloudFunctionObject::checkStepInterval
         why =
             "the start time " + time_.timeName() + " has the time index "
           + Foam::name(startIndex) + ", not a multiple of "
+          + Foam::name(interval);
+    }
+    else if (label(startSteps) % interval != 0)
+    {
+        why =
+            "timeStart " + Foam::name(dict.get<scalar>("timeStart"))
+          + " is " + Foam::name(label(startSteps)) + " time steps after the"
+            " start time " + time_.timeName() + ", not a multiple of "
           + Foam::name(interval);
     }
     if (!why.empty())

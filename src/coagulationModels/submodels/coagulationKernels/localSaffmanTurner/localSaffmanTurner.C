@@ -146,7 +146,7 @@ Foam::coagulation::coagulationKernels::localSaffmanTurner::localSaffmanTurner
     ),
     nu_(nullptr),
     nu_uniform_(0),
-    dictName_(dict.name()),
+    dict_(dict),
     epsilonVersion_(-1),
     nuVersion_(-1)
 {
@@ -196,12 +196,13 @@ Foam::coagulation::coagulationKernels::localSaffmanTurner::makeCellKernels()
         const scalar K0c = K0()*std::sqrt(epsilon[celli]/nuc);
         if (!(K0c > 0) || !std::isfinite(K0c))
         {
-            FatalErrorInFunction
-                << "The " << modelName << " in " << dictName_ << " gives "
+            FatalIOErrorInFunction(dict_)
+                << "The " << modelName << " in " << dict_.name() << " gives "
                 << "cell " << celli << " the prefactor coefficient"
                 << " sqrt(epsilon/nu) = " << K0c << " (epsilon " << epsilon[celli]
                 << ", nu " << nuc << ") at t = " << epsilon_().time().value()
-                << ": it must be positive and finite" << nl << exit(FatalError);
+                << ": it must be positive and finite" << nl
+                << exit(FatalIOError);
         }
         lowest = min(lowest, K0c);
         highest = max(highest, K0c);

@@ -210,6 +210,18 @@ bool Foam::coagulation::flowSeries::holds
             }
         }
     }
+    // Decomposed: every processor's folders hold it, or none do (the
+    // fields' sources, and what is collective on them, are the same on all)
+    if (returnReduce(n, minOp<label>()) != returnReduce(n, maxOp<label>()))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'flowSeries' in " << dict.name() << ": the flow case's"
+            << " processor folders do not all hold " << name << " (read by the "
+            << reader << "): this processor's " << case_ << " holds it in " << n
+            << " of " << times_.size() << " times." << nl
+            << "    Decompose every field of the flow case" << nl
+            << exit(FatalIOError);
+    }
     return n > 0;
 }
 
