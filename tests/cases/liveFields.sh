@@ -239,6 +239,64 @@ set -e
 [ "$rc" = 3 ] || fail "the run held at the start's epsilon passed the comparison (exit $rc)"
 echo "ok: localSaffmanTurner follows epsilon of the flow series (time rescaling, epsilon mean $epsMean)"
 
+# scalarFile case time name dimensions value
+scalarFile()
+{
+    mkdir -p "$1/$2"
+    cat > "$1/$2/$3" <<DICT
+FoamFile { version 2.0; format ascii; class volScalarField; object $3; }
+dimensions      $4;
+internalField   uniform $5;
+boundaryField { inlet { type zeroGradient; } outlet { type zeroGradient; } sides { type empty; } }
+DICT
+}
+
+# 5b. The same with the gas: free-molecular Brownian coagulation (a part of a sum kernel),
+#     K proportional to sqrt(T), T(t) = 300 K (1 + 2t/tau) of a flow series: the run at the
+#     mean sqrt(T) (T = 300 K times epsilon's factor above), and not the run at 300 K
+gasCase()
+{
+    local c
+    c=$(stCase "$1")
+    setEntry "$c" constant/coagulationProperties kernel \
+        "{ type sum; kernels { brownian { type Brownian; regime freeMolecular; T T; p 1e5; } } }"
+    foamDictionary -case "$c" "$c/constant/coagulationProperties" -entry particles \
+        -add "{ density 1800; massUnit 9.42e-22; }" > /dev/null
+    setEntry "$c" constant/coagulationProperties initialPopulation "{ numberDensity 3e16; mass 1; }"
+    setEntry "$c" constant/coagulationProperties statisticalWeight "{ n 400; V1 5e-17; }"
+    echo "$c"
+}
+gasFlow="$workDir/gas_flow"
+rm -rf "$gasFlow"
+mkdir -p "$gasFlow/constant"
+gasVarying=$(gasCase gas_varying)
+cp -r "$gasVarying/constant/polyMesh" "$gasFlow/constant/"
+for i in 0 1 2 3 4 5 6 7 8 9 10; do
+    t=$(awk -v i="$i" 'BEGIN { print i/100 }')
+    scalarFile "$gasFlow" "$t" T "[0 0 0 1 0 0 0]" \
+        "$(awk -v t="$t" -v tau="$tau" 'BEGIN { printf "%.17g", 300*(1 + 2*t/tau) }')"
+    cp "$gasVarying/0/U" "$gasFlow/$t/U"
+done
+foamDictionary -case "$gasVarying" "$gasVarying/constant/coagulationProperties" -entry transport \
+    -add "{ type frozenFlow; flowSeries \"../gas_flow\"; }" > /dev/null
+gasMean=$(gasCase gas_mean)
+setEntry "$gasMean" constant/coagulationProperties seed 2     # an independent realisation
+scalarFile "$gasMean" 0 T "[0 0 0 1 0 0 0]" "$(awk -v e="$epsMean" 'BEGIN { printf "%.17g", 300*e }')"
+gasStart=$(gasCase gas_start)
+scalarFile "$gasStart" 0 T "[0 0 0 1 0 0 0]" 300
+for c in "$gasVarying" "$gasMean" "$gasStart"; do
+    (cd "$c" && runApplication coagulationFoam) || fail "coagulationFoam in $c"
+    checkBalance "$c/log.coagulationFoam"
+done
+compare "$gasVarying" "$gasMean" \
+    || fail "the Brownian kernel on a varying T is not the run at the mean sqrt(T)"
+set +e
+compare "$gasVarying" "$gasStart"
+rc=$?
+set -e
+[ "$rc" = 3 ] || fail "the run held at the start's T passed the comparison (exit $rc)"
+echo "ok: the Brownian kernel (a part of a sum) follows T of the flow series"
+
 # 6. The turbulent walk on a nut that changes in time: a puff of 20 000 particles in the two
 #    middle cells of the duct (no flow, no coagulation), nut(t) = nut0 (1 + 2t/tau) written as
 #    a flow series. The spread's variance grows by 2 int D dt, D = nut/Sct, so at T it is the
@@ -276,17 +334,6 @@ puffCase()
         echo 'boundaryField { inlet { type zeroGradient; } outlet { type zeroGradient; } sides { type empty; } }'
     } > "$c/0/n0"
     echo "$c"
-}
-# scalarFile case time name dimensions value
-scalarFile()
-{
-    mkdir -p "$1/$2"
-    cat > "$1/$2/$3" <<DICT
-FoamFile { version 2.0; format ascii; class volScalarField; object $3; }
-dimensions      $4;
-internalField   uniform $5;
-boundaryField { inlet { type zeroGradient; } outlet { type zeroGradient; } sides { type empty; } }
-DICT
 }
 nutFlow="$workDir/puff_flow"
 rm -rf "$nutFlow"

@@ -878,6 +878,16 @@ BUGS = {
              "    if (nut_.version() != nutVersion_)\n    {\n",
              "case_liveFields",
              "turbulent walk: D not made anew when nut changes (the start's nut throughout)"),
+    "B161": (M + "submodels/coagulationKernels/sum/sum.C",
+             "        changed = part.correct() || changed;\n",
+             "        part.correct();\n",
+             "case_liveFields",
+             "sum kernel: the parts' new cell kernels not summed anew (the sums of the start's)"),
+    "B162": (M + "submodels/coagulationKernels/cellGas/cellGas.C",
+             "        makeGas();\n        return true;\n",
+             "        return false;\n",
+             "case_liveFields",
+             "cellGas: each cell's gas not made anew when T or p changes"),
 }
 
 
