@@ -5,14 +5,17 @@
 # grows as r0 + b t by an fvOptions source, so that M0..M2 are the solutions of the closed
 # moment equations with that rate (rampBox.py):
 #  1. the coagulationCloud function object inside scalarTransportFoam takes the solver's T at
-#     every step (between its old and new values): the exact moments within intervals; the
+#     every step (linear over the split step): the exact moments within intervals; the
 #     solver's write times are the only time folders, each marked complete;
 #  2. coagulationFoam, which reads T once from the start time (frozen), misses the ramp: the
 #     same check fails;
 #  3. coagulationFoam on the written times of run 1 (transport flowSeries) reads T from
 #     them, linear in time: the exact moments;
 #  4. a field the solver does not register (the function object) and a flow series with a
-#     time that lacks T are FatalIOErrors naming the field and the folder.
+#     time that lacks T are FatalIOErrors naming the field and the folder;
+#  5. kernels (localSaffmanTurner's epsilon, the Brownian kernel's T in a sum) and 6. the
+#     turbulent walk's nut on fields that grow in time in a flow series, against the runs at
+#     their time means (time rescaling).
 . "$(dirname "$0")/caseLib.sh"
 r0=3e8
 b=6e9
