@@ -190,6 +190,8 @@ stCase()
     foamDictionary -case "$c" "$c/constant/coagulationProperties" -entry initialPopulation \
         -add "{ numberDensity 1.25e8; mass 1; }" > /dev/null
     setEntry "$c" constant/coagulationProperties sampling "{ tRelax 0; sampleInterval 0.01; }"
+    foamDictionary -case "$c" "$c/constant/coagulationProperties" -entry transport \
+        -add "{ type frozenFlow; }" > /dev/null
     setEntry "$c" system/controlDict deltaT 1e-3
     setEntry "$c" system/controlDict endTime 0.1
     setEntry "$c" system/controlDict writeInterval 0.1
@@ -197,51 +199,6 @@ stCase()
         -remove > /dev/null
     echo "$c"
 }
-# epsilonFile case time value
-epsilonFile()
-{
-    mkdir -p "$1/$2"
-    cat > "$1/$2/epsilon" <<DICT
-FoamFile { version 2.0; format ascii; class volScalarField; object epsilon; }
-dimensions      [0 2 -3 0 0 0 0];
-internalField   uniform $3;
-boundaryField { inlet { type zeroGradient; } outlet { type zeroGradient; } sides { type empty; } }
-DICT
-}
-flow="$workDir/st_flow"
-rm -rf "$flow"
-mkdir -p "$flow/constant"
-stVarying=$(stCase st_varying)
-cp -r "$stVarying/constant/polyMesh" "$flow/constant/"
-for i in 0 1 2 3 4 5 6 7 8 9 10; do
-    t=$(awk -v i="$i" 'BEGIN { print i/100 }')
-    epsilonFile "$flow" "$t" "$(awk -v t="$t" -v e="$eps0" -v tau="$tau" 'BEGIN { printf "%.17g", e*(1 + 2*t/tau) }')"
-    cp "$stVarying/0/U" "$flow/$t/U"
-done
-foamDictionary -case "$stVarying" "$stVarying/constant/coagulationProperties" -entry transport \
-    -add "{ type frozenFlow; flowSeries \"../st_flow\"; }" > /dev/null
-# (int_0^T sqrt(1 + 2t/tau) dt / T)^2 eps0, T = 0.1
-epsMean=$(awk -v e="$eps0" -v tau="$tau" 'BEGIN { T = 0.1; m = tau/3*((1 + 2*T/tau)^1.5 - 1)/T; printf "%.17g", e*m*m }')
-stMean=$(stCase st_mean)
-setEntry "$stMean" constant/coagulationProperties seed 2     # an independent realisation
-epsilonFile "$stMean" 0 "$epsMean"
-stStart=$(stCase st_start)
-epsilonFile "$stStart" 0 "$eps0"
-for c in "$stVarying" "$stMean" "$stStart"; do
-    (cd "$c" && runApplication coagulationFoam) || fail "coagulationFoam in $c"
-    checkBalance "$c/log.coagulationFoam"
-done
-compare() { PYTHONPATH="$COAGULATIONFOAM_DIR/src/python${PYTHONPATH:+:$PYTHONPATH}" \
-    "$COAGULATIONFOAM_PYTHON" "$testsDir/compareRuns.py" "$1" "$2"; }
-compare "$stVarying" "$stMean" \
-    || fail "localSaffmanTurner on a varying epsilon is not the run at the mean rate"
-set +e
-compare "$stVarying" "$stStart"
-rc=$?
-set -e
-[ "$rc" = 3 ] || fail "the run held at the start's epsilon passed the comparison (exit $rc)"
-echo "ok: localSaffmanTurner follows epsilon of the flow series (time rescaling, epsilon mean $epsMean)"
-
 # scalarFile case time name dimensions value
 scalarFile()
 {
@@ -253,6 +210,56 @@ internalField   uniform $5;
 boundaryField { inlet { type zeroGradient; } outlet { type zeroGradient; } sides { type empty; } }
 DICT
 }
+
+# seriesStudy name field dimensions start mean makeCase [spread]: name_varying (made by
+# makeCase) on the flow series name_flow (U = 0) whose field grows as start (1 + 2t/tau),
+# name_mean (an independent realisation, seed 2) with the field held at mean, name_start
+# with it held at start; the first must match the second and differ from the third
+# (compareRuns.py; spread: the variance of the particles' x)
+seriesStudy()
+{
+    local name="$1" field="$2" dims="$3" start="$4" mean="$5" make="$6" mode="${7:-}"
+    local flowDir="$workDir/${name}_flow" varying meanCase startCase t i c rc args=()
+    varying=$($make "${name}_varying")
+    rm -rf "$flowDir"
+    mkdir -p "$flowDir/constant"
+    cp -r "$varying/constant/polyMesh" "$flowDir/constant/"
+    for i in 0 1 2 3 4 5 6 7 8 9 10; do
+        t=$(awk -v i="$i" 'BEGIN { print i/100 }')
+        scalarFile "$flowDir" "$t" "$field" "$dims" \
+            "$(awk -v t="$t" -v s="$start" -v tau="$tau" 'BEGIN { printf "%.17g", s*(1 + 2*t/tau) }')"
+        cp "$varying/0/U" "$flowDir/$t/U"
+    done
+    foamDictionary -case "$varying" "$varying/constant/coagulationProperties" \
+        -entry transport/flowSeries -add "\"../${name}_flow\"" > /dev/null
+    meanCase=$($make "${name}_mean")
+    setEntry "$meanCase" constant/coagulationProperties seed 2
+    scalarFile "$meanCase" 0 "$field" "$dims" "$mean"
+    startCase=$($make "${name}_start")
+    scalarFile "$startCase" 0 "$field" "$dims" "$start"
+    for c in "$varying" "$meanCase" "$startCase"; do
+        (cd "$c" && runApplication coagulationFoam) || fail "coagulationFoam in $c"
+        checkBalance "$c/log.coagulationFoam"
+    done
+    if [ "$mode" = spread ]; then
+        args=(--spread "$(awk '/^Initial population:/ { print $3 }' "$varying/log.coagulationFoam")")
+    fi
+    compare() { PYTHONPATH="$COAGULATIONFOAM_DIR/src/python${PYTHONPATH:+:$PYTHONPATH}" \
+        "$COAGULATIONFOAM_PYTHON" "$testsDir/compareRuns.py" "${args[@]}" "$1" "$2"; }
+    compare "$varying" "$meanCase" \
+        || fail "$name: the run on $field growing in time is not the run at its time mean"
+    set +e
+    compare "$varying" "$startCase"
+    rc=$?
+    set -e
+    [ "$rc" = 3 ] || fail "$name: the run held at the start's $field passed the comparison (exit $rc)"
+}
+
+# (int_0^T sqrt(1 + 2t/tau) dt / T)^2, T = 0.1: the factor of the mean of sqrt
+sqrtMean=$(awk -v tau="$tau" 'BEGIN { T = 0.1; m = tau/3*((1 + 2*T/tau)^1.5 - 1)/T; printf "%.17g", m*m }')
+seriesStudy st epsilon "[0 2 -3 0 0 0 0]" "$eps0" \
+    "$(awk -v e="$eps0" -v f="$sqrtMean" 'BEGIN { printf "%.17g", e*f }')" stCase
+echo "ok: localSaffmanTurner follows epsilon of the flow series (time rescaling, epsilon mean $sqrtMean)"
 
 # 5b. The same with the gas: free-molecular Brownian coagulation (a part of a sum kernel),
 #     K proportional to sqrt(T), T(t) = 300 K (1 + 2t/tau) of a flow series: the run at the
@@ -269,35 +276,8 @@ gasCase()
     setEntry "$c" constant/coagulationProperties statisticalWeight "{ n 400; V1 5e-17; }"
     echo "$c"
 }
-gasFlow="$workDir/gas_flow"
-rm -rf "$gasFlow"
-mkdir -p "$gasFlow/constant"
-gasVarying=$(gasCase gas_varying)
-cp -r "$gasVarying/constant/polyMesh" "$gasFlow/constant/"
-for i in 0 1 2 3 4 5 6 7 8 9 10; do
-    t=$(awk -v i="$i" 'BEGIN { print i/100 }')
-    scalarFile "$gasFlow" "$t" T "[0 0 0 1 0 0 0]" \
-        "$(awk -v t="$t" -v tau="$tau" 'BEGIN { printf "%.17g", 300*(1 + 2*t/tau) }')"
-    cp "$gasVarying/0/U" "$gasFlow/$t/U"
-done
-foamDictionary -case "$gasVarying" "$gasVarying/constant/coagulationProperties" -entry transport \
-    -add "{ type frozenFlow; flowSeries \"../gas_flow\"; }" > /dev/null
-gasMean=$(gasCase gas_mean)
-setEntry "$gasMean" constant/coagulationProperties seed 2     # an independent realisation
-scalarFile "$gasMean" 0 T "[0 0 0 1 0 0 0]" "$(awk -v e="$epsMean" 'BEGIN { printf "%.17g", 300*e }')"
-gasStart=$(gasCase gas_start)
-scalarFile "$gasStart" 0 T "[0 0 0 1 0 0 0]" 300
-for c in "$gasVarying" "$gasMean" "$gasStart"; do
-    (cd "$c" && runApplication coagulationFoam) || fail "coagulationFoam in $c"
-    checkBalance "$c/log.coagulationFoam"
-done
-compare "$gasVarying" "$gasMean" \
-    || fail "the Brownian kernel on a varying T is not the run at the mean sqrt(T)"
-set +e
-compare "$gasVarying" "$gasStart"
-rc=$?
-set -e
-[ "$rc" = 3 ] || fail "the run held at the start's T passed the comparison (exit $rc)"
+seriesStudy gas T "[0 0 0 1 0 0 0]" 300 \
+    "$(awk -v f="$sqrtMean" 'BEGIN { printf "%.17g", 300*f }')" gasCase
 echo "ok: the Brownian kernel (a part of a sum) follows T of the flow series"
 
 # 6. The turbulent walk on a nut that changes in time: a puff of 20 000 particles in the two
@@ -338,36 +318,6 @@ puffCase()
     } > "$c/0/n0"
     echo "$c"
 }
-nutFlow="$workDir/puff_flow"
-rm -rf "$nutFlow"
-mkdir -p "$nutFlow/constant"
-puffVarying=$(puffCase puff_varying)
-cp -r "$puffVarying/constant/polyMesh" "$nutFlow/constant/"
-for i in 0 1 2 3 4 5 6 7 8 9 10; do
-    t=$(awk -v i="$i" 'BEGIN { print i/100 }')
-    scalarFile "$nutFlow" "$t" nut "[0 2 -1 0 0 0 0]" \
-        "$(awk -v t="$t" -v n="$nut0" -v tau="$tau" 'BEGIN { printf "%.17g", n*(1 + 2*t/tau) }')"
-    cp "$puffVarying/0/U" "$nutFlow/$t/U"
-done
-foamDictionary -case "$puffVarying" "$puffVarying/constant/coagulationProperties" \
-    -entry transport/flowSeries -add '"../puff_flow"' > /dev/null
-puffMean=$(puffCase puff_mean)
-setEntry "$puffMean" constant/coagulationProperties seed 2   # an independent realisation
-scalarFile "$puffMean" 0 nut "[0 2 -1 0 0 0 0]" "$(awk -v n="$nut0" -v tau="$tau" 'BEGIN { printf "%.17g", n*(1 + 0.1/tau) }')"
-puffStart=$(puffCase puff_start)
-scalarFile "$puffStart" 0 nut "[0 2 -1 0 0 0 0]" "$nut0"
-for c in "$puffVarying" "$puffMean" "$puffStart"; do
-    (cd "$c" && runApplication coagulationFoam) || fail "coagulationFoam in $c"
-    checkBalance "$c/log.coagulationFoam"
-done
-nPuff=$(awk '/^Initial population:/ { print $3 }' "$puffVarying/log.coagulationFoam")
-spread() { PYTHONPATH="$COAGULATIONFOAM_DIR/src/python${PYTHONPATH:+:$PYTHONPATH}" \
-    "$COAGULATIONFOAM_PYTHON" "$testsDir/compareRuns.py" --spread "$nPuff" "$1" "$2"; }
-spread "$puffVarying" "$puffMean" \
-    || fail "the walk on a varying nut does not spread as the walk on its mean"
-set +e
-spread "$puffVarying" "$puffStart"
-rc=$?
-set -e
-[ "$rc" = 3 ] || fail "the walk held at the start's nut passed the comparison (exit $rc)"
+seriesStudy puff nut "[0 2 -1 0 0 0 0]" "$nut0" \
+    "$(awk -v n="$nut0" -v tau="$tau" 'BEGIN { printf "%.17g", n*(1 + 0.1/tau) }')" puffCase spread
 echo "ok: the turbulent walk follows nut of the flow series"

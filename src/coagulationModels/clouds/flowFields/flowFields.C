@@ -19,14 +19,6 @@ namespace coagulation
 }
 }
 
-const Foam::Enum<Foam::coagulation::flowFields::source>
-Foam::coagulation::flowFields::sourceNames
-({
-    { source::frozen, "frozen" },
-    { source::series, "series" },
-    { source::live, "live" }
-});
-
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -70,8 +62,7 @@ Foam::coagulation::flowFields::flowFields
     mesh_(mesh),
     source_(live ? source::live : source::frozen),
     series_(),
-    fields_(),
-    t_(mesh.time().value())
+    fields_()
 {
     if (transportDict.found("flowSeries"))
     {
@@ -200,20 +191,11 @@ bool Foam::coagulation::flowFields::set
         label a = -1, b = -1;
         scalar theta = 0;
         series_->bracket(t, a, b, theta);
-        if (a != f.a_ || b != f.b_)
-        {
-            if (a == f.b_ && f.fb_)
-            {
-                f.fa_ = std::move(f.fb_);
-            }
-            else
-            {
-                f.fa_ = readSeries(f, a);
-            }
-            f.fb_ = (b == a) ? autoPtr<volScalarField>() : readSeries(f, b);
-            f.a_ = a;
-            f.b_ = b;
-        }
+        flowSeries::hold
+        (
+            a, b, f.a_, f.b_, f.fa_, f.fb_,
+            [&](const label i) { return readSeries(f, i); }
+        );
         const Foam::scalarField& fa = f.fa_->primitiveField();
         if (b == a)
         {
@@ -395,7 +377,7 @@ Foam::coagulation::flowFields::cellField
     {
         label a = -1, b = -1;
         scalar theta = 0;
-        series_->bracket(t_, a, b, theta);
+        series_->bracket(mesh_.time().value(), a, b, theta);
         f->values_ = readSeries(*f, a);
         f->values_->rename(fieldName + ":coagulation");
     }
@@ -406,7 +388,8 @@ Foam::coagulation::flowFields::cellField
         f->tLast_ = mesh_.time().value();
         f->indexLast_ = mesh_.time().timeIndex();
     }
-    set(*f, t_, t_);
+    // Set at the time now (the submodels are made before the first step)
+    set(*f, mesh_.time().value(), mesh_.time().value());
     return *f;
 }
 
@@ -417,7 +400,6 @@ void Foam::coagulation::flowFields::update
     const scalar stepStart
 )
 {
-    t_ = t;
     for (flowField& f : fields_)
     {
         set(f, t, stepStart);

@@ -147,7 +147,7 @@ void Foam::coagulation::coagulationCloudFunctionObject::checkStepInterval
             << why.c_str() << ". The population's split steps end every "
             << interval << " time steps, and every written time must hold"
             << " the particles of that time." << nl
-            << "    Write (and end the run) at multiples of " << interval
+            << "    Start, write and end the run at multiples of " << interval
             << " time steps, or set executeInterval 1" << nl
             << exit(FatalIOError);
     }

@@ -270,20 +270,7 @@ void Foam::coagulation::flowSeries::set(volVectorField& U, const scalar t)
     scalar theta = 0;
     bracket(t, a, b, theta);
 
-    if (a != a_ || b != b_)
-    {
-        if (a == b_ && Ub_)
-        {
-            Ua_ = std::move(Ub_);
-        }
-        else
-        {
-            Ua_ = read(a);
-        }
-        Ub_ = (b == a) ? autoPtr<volVectorField>() : read(b);
-        a_ = a;
-        b_ = b;
-    }
+    hold(a, b, a_, b_, Ua_, Ub_, [this](const label i) { return read(i); });
 
     const volVectorField& Ua = *Ua_;
     if (b == a)
