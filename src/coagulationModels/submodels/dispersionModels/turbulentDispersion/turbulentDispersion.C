@@ -37,14 +37,20 @@ Foam::coagulation::dispersionModels::turbulentDispersion::turbulentDispersion
     dispersionModel(mesh),
     nut_
     (
-        flowFields::of(mesh).cellField
         (
-            checked(dict),
-            "dispersion model " + typeName,
-            "nut",
-            dict.getOrDefault<word>("nut", "nut"),
-            dimViscosity,
-            false
+            caseChecks::keywords
+            (
+                dict, {"type", "Sct", "nut", "drift", "Brownian"}
+            ),
+            flowFields::of(mesh).cellField
+            (
+                dict,
+                "dispersion model " + typeName,
+                "nut",
+                dict.getOrDefault<word>("nut", "nut"),
+                dimViscosity,
+                false
+            )
         )
     ),
     Sct_(caseChecks::positive(dict, "Sct")),
@@ -68,17 +74,6 @@ Foam::coagulation::dispersionModels::turbulentDispersion::turbulentDispersion
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-const Foam::dictionary&
-Foam::coagulation::dispersionModels::turbulentDispersion::checked
-(
-    const dictionary& dict
-)
-{
-    caseChecks::keywords(dict, {"type", "Sct", "nut", "drift", "Brownian"});
-    return dict;
-}
-
 
 void Foam::coagulation::dispersionModels::turbulentDispersion::makeD()
 {
