@@ -55,29 +55,26 @@ bool Foam::coagulation::coagulationParticle::move
 
     while (td.keepParticle && !td.switchProcessor && stepFraction() < 1)
     {
-        // The carrier velocity is constant within a cell: track to the
-        // next face (or the end of the step) in one straight segment, within
-        // the solved directions of a 1-D/2-D mesh; a walk is one straight
-        // step, mirrored at the faces it rebounds from
+        // The step's displacement: the advection with the carrier velocity
+        // plus the random walk (zero without one), both mirrored in the
+        // faces the particle rebounded from. With the velocity constant
+        // within a cell, one straight segment to the next face (or the end
+        // of the step); with the velocity varying within the cell, a segment
+        // of at most maxCo of the cell's length scale with the velocity at
+        // its start. Within the solved directions of a 1-D/2-D mesh
         const scalar before = stepFraction();
         scalar f = 1 - before;
         vector displacement;
-        if (td.walk())
+        if (td.UInterp())
         {
-            displacement = f*dispersal_;
-        }
-        else if (td.UInterp())
-        {
-            // Velocity varying within the cell: a segment of at most maxCo
-            // of the cell's length scale, with the velocity at its start
             const vector s = trackTime*td.velocity(*this);
             const scalar l = td.cellLength(cell());
             f = min(f, td.maxCo()*l/max(SMALL*l, mag(s)));
-            displacement = f*s;
+            displacement = f*(s + dispersal_);
         }
         else
         {
-            displacement = f*trackTime*td.velocity(cell());
+            displacement = f*(trackTime*td.velocity(cell()) + dispersal_);
         }
         meshTools::constrainDirection(mesh(), solutionD, displacement);
 
@@ -101,7 +98,7 @@ bool Foam::coagulation::coagulationParticle::move
 
     // The walk is made (or the particle is gone); a particle handed to
     // another processor keeps the rest of it
-    if (td.walk() && !td.switchProcessor)
+    if (!td.switchProcessor)
     {
         dispersal_ = Zero;
     }

@@ -27,7 +27,8 @@ namespace coagulation
 Foam::coagulation::dispersionModel::dispersionModel(const fvMesh& mesh)
 :
     mesh_(mesh),
-    cellStickFaces_(mesh.nCells())
+    cellStickStart_(mesh.nCells() + 1, Zero),
+    stickFaces_()
 {}
 
 
@@ -89,10 +90,23 @@ void Foam::coagulation::dispersionModel::setStickWalls(const boolList& stick)
             }
         }
     }
+    stickFaces_.clear();
     forAll(near, celli)
     {
-        cellStickFaces_[celli].transfer(near[celli]);
+        cellStickStart_[celli] = label(stickFaces_.size());
+        for (const label facei : near[celli])
+        {
+            const vector n = normalised(mesh_.faceAreas()[facei]);
+            stickFaces_.push_back
+            ({
+                facei,
+                patches.whichPatch(facei),
+                n,
+                n & mesh_.faceCentres()[facei]
+            });
+        }
     }
+    cellStickStart_[mesh_.nCells()] = label(stickFaces_.size());
 }
 
 
@@ -100,9 +114,12 @@ Foam::vector Foam::coagulation::dispersionModel::displacement
 (
     const coagulationParticle& p,
     const scalar dt,
-    coag::CounterStream& s
+    const vector& advection,
+    coag::CounterStream& s,
+    label& wallFace
 ) const
 {
+    wallFace = -1;
     vector drift(Zero);
     const scalar D = diffusivity(p, drift);
 
@@ -113,50 +130,56 @@ Foam::vector Foam::coagulation::dispersionModel::displacement
     const vector step =
         drift*dt + sqrt(2*D*dt)*vector(xi[0], xi[1], xi[2]);
 
-    const labelList& faces = cellStickFaces_[p.cell()];
-    if (faces.empty() || !(D > 0))
+    const label celli = p.cell();
+    if (!nearStickWall(celli) || !(D > 0))
     {
         return step;
     }
 
     // Bridge correction at stick walls: per patch the face plane the bridge
-    // most likely touched, P = exp(-a b/(D dt)) with both ends inside
-    const polyBoundaryMesh& patches = mesh_.boundaryMesh();
+    // most likely touched, P = exp(-a b/(D dt)) with both ends inside. The
+    // end is that of the whole move, advection included: a Brownian bridge
+    // does not depend on the drift
     const vector x0 = p.position();
+    const vector move = step + advection;
     scalar survive = 1;
     scalar bestP = 0;
-    vector toWall(Zero);
+    label bestFace = -1;
     label lastPatch = -1;
     scalar patchP = 0;
-    vector patchToWall(Zero);
+    label patchFace = -1;
     auto closePatch = [&]()
     {
         survive *= 1 - patchP;
         if (patchP > bestP)
         {
             bestP = patchP;
-            toWall = patchToWall;
+            bestFace = patchFace;
         }
         patchP = 0;
     };
-    for (const label facei : faces)
+    for
+    (
+        label i = cellStickStart_[celli];
+        i < cellStickStart_[celli + 1];
+        ++i
+    )
     {
-        const label patchi = patches.whichPatch(facei);
-        if (patchi != lastPatch)
+        const stickFace& sf = stickFaces_[i];
+        if (sf.patch != lastPatch)
         {
             closePatch();
-            lastPatch = patchi;
+            lastPatch = sf.patch;
         }
-        const vector n = normalised(mesh_.faceAreas()[facei]);
-        const scalar a = (mesh_.faceCentres()[facei] - x0) & n;
-        const scalar b = a - (step & n);
+        const scalar a = sf.offset - (sf.normal & x0);
+        const scalar b = a - (move & sf.normal);
         if (a > 0 && b > 0)
         {
             const scalar P = exp(-a*b/(D*dt));
             if (P > patchP)
             {
                 patchP = P;
-                patchToWall = (1 + 1e-6)*a*n + 1e-9*sqrt(D*dt)*n;
+                patchFace = sf.face;
             }
         }
     }
@@ -164,7 +187,8 @@ Foam::vector Foam::coagulation::dispersionModel::displacement
 
     if (bestP > 0 && s.uniform() > survive)
     {
-        return toWall;
+        wallFace = bestFace;
+        return Zero;
     }
     return step;
 }

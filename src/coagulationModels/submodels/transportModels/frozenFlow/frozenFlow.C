@@ -112,6 +112,28 @@ Foam::coagulation::transportModels::frozenFlow::frozenFlow
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+namespace
+{
+    //- How many particles ahead of the move the next is fetched
+    constexpr Foam::label prefetchDistance = 8;
+
+    //- Ask for a particle's cache lines before its move reads them
+    inline void prefetch(const Foam::coagulation::coagulationParticle* p)
+    {
+        const char* bytes = reinterpret_cast<const char*>(p);
+        for
+        (
+            std::size_t line = 0;
+            line < sizeof(Foam::coagulation::coagulationParticle);
+            line += 64
+        )
+        {
+            __builtin_prefetch(bytes + line);
+        }
+    }
+}
+
+
 void Foam::coagulation::transportModels::frozenFlow::moveOnThreads
 (
     const volVectorField& U,
@@ -124,7 +146,8 @@ void Foam::coagulation::transportModels::frozenFlow::moveOnThreads
     // the particles to compact away)
     enum : char
     {
-        keptByMove = 0, leftByOutflow, droppedByTracking, toProcessor
+        keptByMove = 0, leftByOutflow, droppedByTracking, toProcessor,
+        depositedByWalk
     };
 
     // The threads only read the mesh: its demand-driven parts that tracking
@@ -136,12 +159,19 @@ void Foam::coagulation::transportModels::frozenFlow::moveOnThreads
     (void)mesh.geometricD();
     (void)mesh.solutionD();
 
+    // The particles move in cell order (the sort's list positions): the
+    // mesh data that the moves of consecutive particles read is then mostly
+    // in the cache. Each move changes only its particle, with the stream of
+    // its list position, so the order changes no result
     cellParticleIndex& index = cloud_.index();
     index.list(cloud_);
+    index.sort(cloud_, mesh.nCells());
+    const labelList& cellOrder = index.cellListIndex();
     DynamicList<label>& cells = index.cells();
     DynamicList<coagulationParticle*> leaving;
 
     const label nPatches = mesh.boundaryMesh().size();
+    const bool walks = cloud_.dispersion().active();
 
     // The list entries [first, end) move: all of them from the start of the
     // step, then, round after round, those another processor handed over
@@ -167,19 +197,39 @@ void Foam::coagulation::transportModels::frozenFlow::moveOnThreads
                 cloud_, U, outParticles, outNumber, outMass,
                 cloud_.patchInteraction().stick()
             );
-            threadTd.setWalk(td.walk());
             threadTd.setInterpolation(td.UInterp(), maxCo_, &cellLength_);
 
             #pragma omp for schedule(dynamic, 4096)
-            for (label k = first; k < nParticles; ++k)
+            for (label i = first; i < nParticles; ++i)
             {
+                // The particles lie scattered in memory, in the order they
+                // were made: fetch one a few moves ahead into the cache
+                const label ahead = i + prefetchDistance;
+                if (ahead < nParticles)
+                {
+                    prefetch
+                    (
+                        index.particles()[fresh ? cellOrder[ahead] : ahead]
+                    );
+                }
+                const label k = fresh ? cellOrder[i] : i;
                 coagulationParticle& p = *index.particles()[k];
                 if (fresh)
                 {
                     p.stepFraction() = 0;
-                    if (td.walk())
+                    if (walks)
                     {
-                        p.dispersal() = walkStep(p, k, dt, walkStream);
+                        label wallFace = -1;
+                        p.dispersal() =
+                            walkStep(p, k, dt, walkStream, threadTd, wallFace);
+                        if (wallFace >= 0)
+                        {
+                            // The walk's bridge touched a stick wall
+                            p.face() = wallFace;
+                            outcome_[k] = depositedByWalk;
+                            cells[k] = p.cell();
+                            continue;
+                        }
                     }
                 }
                 const label booked = threadTd.nBooked();
@@ -209,7 +259,20 @@ void Foam::coagulation::transportModels::frozenFlow::moveOnThreads
             }
         }
 
+        index.invalidateSort();
+
+        // The deposits of the walk's bridge first, then what the moves did,
+        // each in list order, as the path over the linked list books them
         leaving.clear();
+        for (label k = first; k < nParticles; ++k)
+        {
+            if (outcome_[k] == depositedByWalk)
+            {
+                coagulationParticle& p = *index.particles()[k];
+                td.bookOutflow(p.patch(), p);
+                cloud_.deleteParticle(p);
+            }
+        }
         for (label k = first; k < nParticles; ++k)
         {
             coagulationParticle& p = *index.particles()[k];
@@ -219,6 +282,8 @@ void Foam::coagulation::transportModels::frozenFlow::moveOnThreads
                     break;
                 case toProcessor:
                     leaving.append(&p);
+                    break;
+                case depositedByWalk:
                     break;
                 case leftByOutflow:
                     td.bookOutflow(p.patch(), p);
@@ -378,11 +443,30 @@ Foam::vector Foam::coagulation::transportModels::frozenFlow::walkStep
     const coagulationParticle& p,
     const label k,
     const scalar dt,
-    const streamSeeds::purpose walkStream
+    const streamSeeds::purpose walkStream,
+    const coagulationParticle::trackingData& td,
+    label& wallFace
 ) const
 {
+    // The advection over the step with the velocity at the start, for the
+    // end point of the bridge near stick walls
+    const dispersionModel& dispersion = cloud_.dispersion();
+    vector advection(Zero);
+    if (dispersion.nearStickWall(p.cell()))
+    {
+        advection =
+            dt
+           *(
+                td.UInterp()
+              ? td.UInterp()->interpolate
+                (
+                    p.coordinates(), p.currentTetIndices()
+                )
+              : td.U()[p.cell()]
+            );
+    }
     coag::CounterStream stream(cloud_.seeds()(k, walkStream));
-    return cloud_.dispersion().displacement(p, dt, stream);
+    return dispersion.displacement(p, dt, advection, stream, wallFace);
 }
 
 
@@ -433,36 +517,39 @@ void Foam::coagulation::transportModels::frozenFlow::move
         td.setInterpolation(UInterp_.get(), maxCo_, &cellLength_);
     }
 
-    // Advection with U, then (operator splitting within the transport) the
-    // random walk of the dispersion model: each a pass over all particles
-    const bool walks = cloud_.dispersion().active();
-    for (const bool walk : {false, true})
+    // The advection with U and the random walk of the dispersion model in
+    // one pass over all particles
+    if (!cloudMove)
     {
-        if (walk && !walks)
+        moveOnThreads(U, td, dt, walkStream);
+    }
+    else
+    {
+        // OpenFOAM's Cloud::move over the linked list; a walk's steps are
+        // drawn first, in list order, and travel with the particles that
+        // change processor; those the bridge took to a stick wall deposit
+        cloud_.index().invalidateList();
+        if (cloud_.dispersion().active())
         {
-            break;
-        }
-        td.setWalk(walk);
-        if (!cloudMove)
-        {
-            moveOnThreads(U, td, dt, walkStream);
-        }
-        else
-        {
-            // OpenFOAM's Cloud::move over the linked list; a walk's steps
-            // are drawn first, in list order, and travel with the particles
-            // that change processor
-            cloud_.index().invalidateList();
-            if (walk)
+            DynamicList<coagulationParticle*> deposited;
+            label k = 0;
+            for (coagulationParticle& p : cloud_)
             {
-                label k = 0;
-                for (coagulationParticle& p : cloud_)
+                label wallFace = -1;
+                p.dispersal() = walkStep(p, k++, dt, walkStream, td, wallFace);
+                if (wallFace >= 0)
                 {
-                    p.dispersal() = walkStep(p, k++, dt, walkStream);
+                    p.face() = wallFace;
+                    td.bookOutflow(p.patch(), p);
+                    deposited.append(&p);
                 }
             }
-            cloud_.Cloud<coagulationParticle>::move(cloud_, td, dt);
+            for (coagulationParticle* p : deposited)
+            {
+                cloud_.deleteParticle(*p);
+            }
         }
+        cloud_.Cloud<coagulationParticle>::move(cloud_, td, dt);
     }
 
     // A particle that reached a patch type it does not handle was stopped
