@@ -177,8 +177,8 @@ rate()   # particles steps seconds
     awk -v n="$1" -v s="$2" -v t="$3" 'BEGIN { printf "%.3f", n*s/t/1e6 }'
 }
 for r in $(seq 1 "$rounds"); do
-    for cfg in "cellPoint turbulent Strang" "cellPoint turbulent Lie" "cellPoint none Lie" \
-               "cell none Lie"; do
+    for cfg in "cellPoint turbulent StrangSAS" "cellPoint turbulent Strang" \
+               "cellPoint turbulent Lie" "cellPoint none Lie" "cell none Lie"; do
         set -- $cfg
         c="$out/run"
         rm -rf "$c"; cp -r "$coag" "$c"

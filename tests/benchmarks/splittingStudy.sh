@@ -1,12 +1,13 @@
 #!/bin/bash
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-# splittingStudy.sh OUT [quick]: the splitting error of Lie and Strang against deltaT
+# splittingStudy.sh OUT [quick]: the splitting error of Lie, Strang and StrangSAS against deltaT
 #, on the paper's ducts, then tables and plots (splittingStudy.py).
 #
 #   A  additive-duct geometry without coagulation (K0 = 1e-30): the mean of M1 is then the
 #      additive duct's own for SWA (the SWA jump keeps every particle's w*m in place), and
 #      each scheme's exact expectation is known (case_splitting): the measured errors near the
-#      inlet against the predicted ones, dt = 3e-4, 6e-4, 1.2e-3 (dx/h = 20/3, 10/3, 5/3)
+#      inlet against the predicted ones, dt = 3e-4, 6e-4, 1.2e-3 (dx/h = 20/3, 10/3, 5/3); for
+#      StrangSAS too
 #   B  constant-kernel duct (paper 3.1, SWA n = 256): M0..M3 against eqs 39-45,
 #      dt = 1e-4 (the paper's), 4e-4, 1.6e-3
 #   C  additive-kernel duct (paper 3.2, SWA n = 2048, the tutorial): M1 and M2, dt = 4e-4,
@@ -68,6 +69,10 @@ for scheme in Lie Strang; do
     for ((r = 1; r <= R; r++)); do
         run "C_${scheme}_4e-4_r$r" additiveKernelDuct $scheme 4e-4 0.4 4e-3 seed $((776 + r))
     done
+done
+# StrangSAS: S(dt/2) A(dt) S(dt/2), part A (its order near the inlet)
+for dt in 3e-4 6e-4 1.2e-3; do
+    run "A_StrangSAS_$dt" additiveKernelDuct StrangSAS $dt $endA $(awk -v d=$dt 'BEGIN { printf "%g", 10 * d }') kernel/K0 1e-30
 done
 run E_Lie_2e-4 additiveKernelDuct Lie 2e-4 0.4 4e-3 seed 777
 run E_Strang_1.2e-3 additiveKernelDuct Strang 1.2e-3 0.4 4.8e-3 seed 777

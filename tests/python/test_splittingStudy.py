@@ -23,6 +23,26 @@ def test_predicted_m1_of_the_two_schemes():
     assert ss.predicted_m1("Lie", 2e-3, 0.0, 2e-3) == pytest.approx(0.0, abs=1e-3)
 
 
+def test_predicted_m1_of_strang_sas():
+    # S(dt/2) A(dt) S(dt/2): half a step's cohort moves h in its own step, half does not,
+    # floor(x/h) + 1/2; on [0, 5h/3] it averages (1/2 + 3/2 (2/3))/(5/3) = 0.9, Strang's
+    # floor(x/h + 1/2) 0.8 and x/h itself 5/6
+    h = 1e-3
+    assert ss.predicted_m1("StrangSAS", h, 0.0, 5 * h / 3, rate=1.0) == pytest.approx(0.9e-3, rel=1e-4)
+    assert ss.predicted_m1("Strang", h, 0.0, 5 * h / 3, rate=1.0) == pytest.approx(0.8e-3, rel=1e-4)
+    # on whole multiples of h it is x/h's own average (second order)
+    assert ss.predicted_m1("StrangSAS", h, 0.0, 4 * h, rate=1.0) == pytest.approx(2e-3, rel=1e-4)
+
+
+def test_runs_of_one_scheme_only(tmp_path):
+    for name in ("A_Strang_3e-4", "A_StrangSAS_3e-4", "A_Lie_3e-4", "C_Strang_4e-4_r1"):
+        (tmp_path / name).mkdir()
+    names = lambda part, sc: sorted(p.rsplit("/", 1)[1] for p in ss.runs_of(str(tmp_path), part, sc))
+    assert names("A", "Strang") == ["A_Strang_3e-4"]
+    assert names("A", "StrangSAS") == ["A_StrangSAS_3e-4"]
+    assert names("C", "Strang") == ["C_Strang_4e-4_r1"]
+
+
 def test_slope_of_the_absolute_errors():
     assert ss.slope([1.0, 2.0, 4.0], [-1.0, -4.0, -16.0]) == pytest.approx(2.0)
 

@@ -30,7 +30,9 @@ from .statistics import Z95, fit_exponent, standard_error_from_realisations
 
 DX = 2e-3           # cells of the additive-duct geometry (A, C, E)
 DX_REFERENCE = 4e-3  # cells of the constant-duct geometry (D)
-SCHEMES = ("Lie", "Strang")
+SCHEMES = ("Lie", "Strang", "StrangSAS")
+# each scheme's incepted staircase I dt (floor(x/h + shift) + offset) (case_splitting)
+STAIRCASE = {"Lie": (0.0, 0.0), "Strang": (0.5, 0.0), "StrangSAS": (0.0, 0.5)}
 _trapz = getattr(np, "trapezoid", None) or np.trapz
 
 
@@ -51,10 +53,12 @@ def load(out, name):
 
 def predicted_m1(scheme, dt, lo, hi, rate=1e5, u=1.0):
     """Exact expectation of the incepted M1 of a scheme without coagulation (case_splitting):
-    the cell average of I dt floor(x/h + s), h = u dt, s = 0 (Lie) or 1/2 (Strang)."""
-    h, s = u * dt, (0.0 if scheme == "Lie" else 0.5)
+    the cell average of I dt (floor(x/h + s) + o), h = u dt, s = 0 (Lie, StrangSAS) or 1/2
+    (Strang), o = 1/2 (StrangSAS) or 0."""
+    h = u * dt
+    s, o = STAIRCASE[scheme]
     x = np.linspace(lo, hi, 200001)
-    return rate * dt * _trapz(np.floor(x / h + s), x) / (hi - lo)
+    return rate * dt * _trapz(np.floor(x / h + s) + o, x) / (hi - lo)
 
 
 def slope(dts, errs):
@@ -95,7 +99,7 @@ def reference_runs(out, part):
     """{(scheme, dt): [relative errors [cell][k] of one seed]} of ductReference --cells files"""
     runs = {}
     for path in glob.glob(out + "/%s_*_r*.txt" % part):
-        m = re.match(part + r"_(Lie|Strang)_([0-9.e-]+)_r(\d+)\.txt", os.path.basename(path))
+        m = re.match(part + r"_(Lie|StrangSAS|Strang)_([0-9.e-]+)_r(\d+)\.txt", os.path.basename(path))
         with open(path) as f:
             rel = reference_lines(f)
         runs.setdefault((m.group(1), float(m.group(2))), []).append(rel)
@@ -104,6 +108,12 @@ def reference_runs(out, part):
 
 def _by_dt(paths):
     return sorted(paths, key=lambda p: float(p.split("_")[-1]))
+
+
+def runs_of(out, part, scheme):
+    """The run folders OUT/PART_SCHEME_<dt>[_r<k>] of one scheme (not of a scheme whose name
+    starts with this one's)"""
+    return glob.glob(out + "/%s_%s_[0-9]*" % (part, scheme))
 
 
 def part_a(out, md, fig_data):
@@ -116,8 +126,10 @@ def part_a(out, md, fig_data):
            "| scheme | dt | dx/h | cell 0 | cell 1 | cell 2 | cell 49 (outlet) | wall |",
            "| --- | --- | --- | --- | --- | --- | --- | --- |"]
     for scheme in SCHEMES:
+        if not runs_of(out, "A", scheme):
+            continue
         dts, pe, me, mc = [], [], [], []
-        for d in _by_dt(glob.glob(out + "/A_%s_*" % scheme)):
+        for d in _by_dt(runs_of(out, "A", scheme)):
             dt = float(d.split("_")[-1])
             f, wall = load(out, os.path.basename(d))
             cells = []
@@ -133,7 +145,7 @@ def part_a(out, md, fig_data):
             md.append("| %s | %g | %.3g | %s | %.0f s |" % (scheme, dt, DX / dt, " | ".join(cells), wall))
         fig_data[("A", scheme)] = (np.array(dts), np.array(pe), np.array(me), np.array(mc))
     md.append("")
-    for scheme in SCHEMES:
+    for scheme in (sc for sc in SCHEMES if ("A", sc) in fig_data):
         dts, pe, me, mc = fig_data[("A", scheme)]
         ok = np.abs(me) > 2 * mc
         txt = "%s: order of the predicted cell-0 error %.2f" % (scheme, slope(dts, pe))
@@ -156,8 +168,10 @@ def part_b(out, md, fig_data):
            "| scheme | dt | M0 cell 0 | M1 cell 0 | M2 cell 0 | M3 cell 0 | M0 outlet | M2 outlet | M3 outlet | wall |",
            "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
     for scheme in SCHEMES:
+        if not runs_of(out, "B", scheme):
+            continue
         dts, e0 = [], []
-        for d in _by_dt(glob.glob(out + "/B_%s_*" % scheme)):
+        for d in _by_dt(runs_of(out, "B", scheme)):
             dt = float(d.split("_")[-1])
             f, wall = load(out, os.path.basename(d))
             cells = []
@@ -175,7 +189,7 @@ def part_b(out, md, fig_data):
             md.append("| %s | %g | %s | %.0f s |" % (scheme, dt, " | ".join(cells), wall))
         fig_data[("B", scheme)] = (np.array(dts), np.array([e for e, _ in e0]), np.array([c for _, c in e0]))
     md.append("")
-    for scheme in SCHEMES:
+    for scheme in (sc for sc in SCHEMES if ("B", sc) in fig_data):
         dts, e, c = fig_data[("B", scheme)]
         ok = np.abs(e) > 2 * c
         if ok.sum() >= 2:
@@ -196,7 +210,9 @@ def part_c(out, md):
            "| scheme | R | M1 cell 1 (x = 0.003) | M1 cell 2 | M1 last cell (9.90e3 exact) | M2 last cell | cells 1..49 with M1 off I x/u beyond the interval | wall per run |",
            "| --- | --- | --- | --- | --- | --- | --- | --- |"]
     for scheme in SCHEMES:
-        runs = sorted(glob.glob(out + "/C_%s_*" % scheme))
+        runs = sorted(runs_of(out, "C", scheme))
+        if not runs:
+            continue
         fs = [load(out, os.path.basename(r)) for r in runs]
         R = len(fs)
         exact = fs[0][0]["M1_analytic"]
@@ -215,7 +231,7 @@ def part_e(out, md):
     E = sorted(glob.glob(out + "/E_*"))
     if not E:
         return
-    C_ = {sc: sorted(glob.glob(out + "/C_%s_*" % sc)) for sc in SCHEMES}
+    C_ = {sc: sorted(runs_of(out, "C", sc)) for sc in SCHEMES}
     md += ["## E. Cost at equal accuracy: additive-kernel duct (SWA, n = 2048, t = 0..0.4)", "",
            "Expected outlet-cell M1 error of the scheme (its exact expectation; the measured one "
            "is below one run's resolution), and the run's wall time.", "",
@@ -244,6 +260,8 @@ def part_d(out, md, fig_data):
            "| --- | --- | --- | --- | --- | --- | --- |"]
     for scheme in SCHEMES:
         dts = sorted(dt for (sc, dt) in runs if sc == scheme)
+        if not dts:
+            continue
         pts = []
         for dt in dts:
             mean, ci, R = pooled(runs[(scheme, dt)])
@@ -257,7 +275,7 @@ def part_d(out, md, fig_data):
             pts.append((dt, mean[0, 1], ci[0, 1], pred[0], mean[0, 0], ci[0, 0]))
         fig_data[("D", scheme)] = np.array(pts)
     md.append("")
-    for scheme in SCHEMES:
+    for scheme in (sc for sc in SCHEMES if ("D", sc) in fig_data):
         p = fig_data[("D", scheme)]
         ok = np.abs(p[:, 1]) > 2 * p[:, 2]
         txt = "%s: order of the exact expected M1 cell-0 error %.2f" % (scheme, slope(p[:, 0], p[:, 3]))
@@ -313,7 +331,7 @@ def plot(out, fig_data):
     """splittingOrder.png: |error| against dt of parts A, B and D."""
     plt = _pyplot()
     fig, axes = plt.subplots(1, 3, figsize=(15, 4))
-    for scheme, col in (("Lie", "C0"), ("Strang", "C1")):
+    for scheme, col in (("Lie", "C0"), ("Strang", "C1"), ("StrangSAS", "C2")):
         if ("A", scheme) in fig_data:
             dts, pe, me, mc = fig_data[("A", scheme)]
             axes[0].loglog(dts, np.abs(pe), "-", color=col, label="%s, exact expectation" % scheme)

@@ -46,6 +46,7 @@ void Foam::coagulation::cellStepper::advanceCell
 (
     const label celli,
     const scalar dt,
+    const streamSeeds::purpose stream,
     worker& w,
     cellOutcome& outcome
 ) const
@@ -84,12 +85,9 @@ void Foam::coagulation::cellStepper::advanceCell
     // Counted in the worker, not in outcome: the outcomes of the cells that
     // the other threads are stepping share its cache lines
     w.events = coag::StepStatistics();
-    w.rng.engine().seed(cloud_.seeds()(celli, streamSeeds::cellStep));
-    {
-        const caseChecks::trapsHeld traps;
-        (incepts ? w.algorithm : w.algorithmNoInception)
-            ->advance(celli, population, inceptionRate, dt, w.rng, w.events);
-    }
+    w.rng.engine().seed(cloud_.seeds()(celli, stream));
+    (incepts ? w.algorithm : w.algorithmNoInception)
+        ->advance(celli, population, inceptionRate, dt, w.rng, w.events);
     outcome.events = w.events;
 
     // Write the cell's new state back: survivors in place, new particles
@@ -130,7 +128,8 @@ void Foam::coagulation::cellStepper::advance
 (
     const scalar dt,
     coag::StepStatistics& events,
-    label& removed
+    label& removed,
+    const streamSeeds::purpose stream
 )
 {
     cellParticleIndex& index = cloud_.index();
@@ -143,41 +142,52 @@ void Foam::coagulation::cellStepper::advance
     // advance, so cells are handed out one at a time)
     std::string failure;
     bool outOfMemory = false;
-    #pragma omp parallel for schedule(dynamic, 1) num_threads(cloud_.nThreads())
-    for (label celli = 0; celli < nCells; ++celli)
+    #pragma omp parallel num_threads(cloud_.nThreads())
     {
-        #ifdef _OPENMP
-        worker& w = workers_[omp_get_thread_num()];
-        #else
-        worker& w = workers_[0];
-        #endif
-        try
+        // OpenFOAM's floating-point traps held over the thread's share of
+        // the cells (an overflow in a jump process gives Inf, which the
+        // algorithm's checks name), set once per thread: a set costs about
+        // as much as a small cell's step
+        const caseChecks::trapsHeld traps;
+        #pragma omp for schedule(dynamic, 1)
+        for (label celli = 0; celli < nCells; ++celli)
         {
-            if (timed_)
+            #ifdef _OPENMP
+            worker& w = workers_[omp_get_thread_num()];
+            #else
+            worker& w = workers_[0];
+            #endif
+            try
             {
-                using clock = std::chrono::steady_clock;
-                const clock::time_point t0 = clock::now();
-                advanceCell(celli, dt, w, outcomes_[celli]);
-                outcomes_[celli].seconds =
-                    std::chrono::duration<double>(clock::now() - t0).count();
+                if (timed_)
+                {
+                    using clock = std::chrono::steady_clock;
+                    const clock::time_point t0 = clock::now();
+                    advanceCell(celli, dt, stream, w, outcomes_[celli]);
+                    outcomes_[celli].seconds =
+                        std::chrono::duration<double>
+                        (
+                            clock::now() - t0
+                        ).count();
+                }
+                else
+                {
+                    advanceCell(celli, dt, stream, w, outcomes_[celli]);
+                }
             }
-            else
+            catch (const std::bad_alloc&)
             {
-                advanceCell(celli, dt, w, outcomes_[celli]);
+                #pragma omp atomic write
+                outOfMemory = true;
             }
-        }
-        catch (const std::bad_alloc&)
-        {
-            #pragma omp atomic write
-            outOfMemory = true;
-        }
-        catch (const std::exception& e)
-        {
-            #pragma omp critical(cellStepFailure)
-            if (failure.empty())
+            catch (const std::exception& e)
             {
-                failure =
-                    "cell " + std::to_string(celli) + ": " + e.what();
+                #pragma omp critical(cellStepFailure)
+                if (failure.empty())
+                {
+                    failure =
+                        "cell " + std::to_string(celli) + ": " + e.what();
+                }
             }
         }
     }

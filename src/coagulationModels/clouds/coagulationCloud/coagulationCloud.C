@@ -23,7 +23,8 @@ const Foam::Enum<Foam::coagulation::coagulationCloud::splittingScheme>
 Foam::coagulation::coagulationCloud::splittingSchemeNames
 ({
     { splittingScheme::Lie, "Lie" },
-    { splittingScheme::Strang, "Strang" }
+    { splittingScheme::Strang, "Strang" },
+    { splittingScheme::StrangSAS, "StrangSAS" }
 });
 
 
@@ -372,7 +373,8 @@ void Foam::coagulation::coagulationCloud::takeInputFields()
 void Foam::coagulation::coagulationCloud::cellStep
 (
     const scalar dt,
-    const scalar tEnd
+    const scalar tEnd,
+    const streamSeeds::purpose stream
 )
 {
     // The kernel's and the inception's fields at the middle of the step
@@ -380,7 +382,7 @@ void Foam::coagulation::coagulationCloud::cellStep
     kernel_->correct();
     inception_->correct();
 
-    cellStepper_->advance(dt, events_, removedInCells_);
+    cellStepper_->advance(dt, events_, removedInCells_, stream);
     checkMemory();
 
     forAllFunctions([](cloudFunction& f) { f.postCellStep(); });
@@ -440,10 +442,10 @@ void Foam::coagulation::coagulationCloud::evolve()
     // Operator splitting over dt (Patterson & Wagner 2011, section 2) of
     //   S: the source terms, each cell on its own: inception (eqs 10, 20)
     //      and coagulation (SWA jumps 21-22, DSA jumps 11-15)
-    //   A: transport, every particle with the frozen flow U, then its
-    //      random walk dX = grad(D) dt + sqrt(2D) dW (coagulation-diffusion
-    //      paper, eq. 8); outflow leaves, walls rebound or take the
-    //      particle (deposition); then inflow enters
+    //   A: transport, every particle with the flow U and its random walk
+    //      dX = grad(D) dt + sqrt(2D) dW (coagulation-diffusion paper,
+    //      eq. 8) in one displacement; outflow leaves, walls rebound or
+    //      take the particle (deposition); then inflow enters
     timer_.start();
     if (splitting_ == splittingScheme::Lie)
     {
@@ -453,7 +455,7 @@ void Foam::coagulation::coagulationCloud::evolve()
         transport(dt, t);
         timer_.transportDone(this->size());
     }
-    else
+    else if (splitting_ == splittingScheme::Strang)
     {
         // Strang: A(dt/2), S(dt), A(dt/2); second order in dt
         transport(0.5*dt, t - 0.5*dt, streamSeeds::inflowFirstHalf);
@@ -462,6 +464,17 @@ void Foam::coagulation::coagulationCloud::evolve()
         timer_.coagulationDone();
         transport(0.5*dt, t);
         timer_.transportDone(this->size());
+    }
+    else
+    {
+        // Strang the other way round: S(dt/2), A(dt), S(dt/2); second
+        // order in dt, one tracking pass
+        cellStep(0.5*dt, t - 0.5*dt, streamSeeds::cellStepFirstHalf);
+        timer_.coagulationDone();
+        transport(dt, t);
+        timer_.transportDone(this->size());
+        cellStep(0.5*dt, t);
+        timer_.coagulationDone();
     }
 
     // The cloud functions on the new state: M0..M3 (eq. 37), samples
