@@ -65,7 +65,7 @@ bool Foam::coagulation::coagulationParticle::move
         const scalar before = stepFraction();
         scalar f = 1 - before;
         vector displacement;
-        if (td.UInterp())
+        if (td.interpolated())
         {
             const vector s = trackTime*td.velocity(*this);
             const scalar l = td.cellLength(cell());

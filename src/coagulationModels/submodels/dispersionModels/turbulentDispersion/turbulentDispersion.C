@@ -57,8 +57,8 @@ Foam::coagulation::dispersionModels::turbulentDispersion::turbulentDispersion
     nutVersion_(-1),
     cellD_(),
     pointD_(),
-    faceTets_(),
-    tets_(),
+    tets_(meshTets::New(mesh)),
+    gradient_(),
     drift_(dict.getOrDefault<bool>("drift", true)),
     brownian_(dict.found("Brownian")),
     gas_()
@@ -85,33 +85,24 @@ void Foam::coagulation::dispersionModels::turbulentDispersion::makeD()
         volPointInterpolation::New(mesh_).interpolate(D)().primitiveField();
     nutVersion_ = nut_.version();
 
-    // The values of every tet, once per nut instead of once per particle
-    // and step: the tets of face f are tetPt = 1 .. f.size() - 2 of its
-    // owner and of its neighbour; a cell's tets together, so that the
-    // particles of a cell, moved one after the other, find them in the cache
-    const faceList& faces = mesh_.faces();
-    const cellList& cells = mesh_.cells();
-    const labelList& owner = mesh_.faceOwner();
-    faceTets_.setSize(2*faces.size());
-    faceTets_ = -1;
-    tets_.clear();
-    forAll(cells, celli)
+    // The gradient in every tet, once per nut instead of once per particle
+    // and step
+    if (drift_)
     {
-        for (const label facei : cells[celli])
-        {
-            faceTets_[2*facei + (owner[facei] == celli ? 0 : 1)] =
-                label(tets_.size());
-            for (label tetPt = 1; tetPt < faces[facei].size() - 1; ++tetPt)
+        gradient_.setSize(tets_.size());
+        tets_.forAllTets
+        (
+            [this](const label i, const tetIndices& tetIs)
             {
-                tets_.push_back(values(tetIndices(celli, facei, tetPt)));
+                gradient_[i] = gradient(tetIs);
             }
-        }
+        );
     }
 }
 
 
-Foam::coagulation::dispersionModels::turbulentDispersion::tetData
-Foam::coagulation::dispersionModels::turbulentDispersion::values
+Foam::vector
+Foam::coagulation::dispersionModels::turbulentDispersion::gradient
 (
     const tetIndices& tetIs
 ) const
@@ -119,31 +110,16 @@ Foam::coagulation::dispersionModels::turbulentDispersion::values
     // D linear in the tet (interpolationCellPoint): the centre's value and
     // the face triangle's points' values; its gradient from
     // (x_k - x_0) . g = v_k - v_0, k = 1, 2, 3
-    const triFace tri = tetIs.faceTriIs(mesh_);
+    const triFace& tri = tets_.points(tets_.index(tetIs));
     const scalar v0 = cellD_[tetIs.cell()];
-    tetData t;
-    t.pointD = vector(pointD_[tri[0]], pointD_[tri[1]], pointD_[tri[2]]);
-    const tetPointRef tp = tetIs.tet(mesh_);
-    const tensor edges(tp.b() - tp.a(), tp.c() - tp.a(), tp.d() - tp.a());
-    t.gradient =
+    const tetPointRef t = tetIs.tet(mesh_);
+    const tensor edges(t.b() - t.a(), t.c() - t.a(), t.d() - t.a());
+    return
         inv(edges)
-      & vector(t.pointD.x() - v0, t.pointD.y() - v0, t.pointD.z() - v0);
-    return t;
-}
-
-
-const Foam::coagulation::dispersionModels::turbulentDispersion::tetData&
-Foam::coagulation::dispersionModels::turbulentDispersion::tet
-(
-    const tetIndices& tetIs
-) const
-{
-    const label facei = tetIs.face();
-    return tets_
-    [
-        faceTets_[2*facei + (mesh_.faceOwner()[facei] == tetIs.cell() ? 0 : 1)]
-      + tetIs.tetPt() - 1
-    ];
+      & vector
+        (
+            pointD_[tri[0]] - v0, pointD_[tri[1]] - v0, pointD_[tri[2]] - v0
+        );
 }
 
 
@@ -167,19 +143,15 @@ Foam::coagulation::dispersionModels::turbulentDispersion::diffusivity
     vector& drift
 ) const
 {
-    // D linear in the particle's tet: the centre's value and the three
-    // face points' values, weighted by the barycentric coordinates
-    // (interpolationCellPoint); its gradient constant there
+    // D linear in the particle's tet (the cell's value at the centre, the
+    // points' values at the face points), its gradient constant there
     const tetIndices tetIs = p.currentTetIndices();
-    const tetData& t = tet(tetIs);
-    const vector& v = t.pointD;
-    const barycentric& b = p.coordinates();
     scalar D = max
     (
-        b[0]*cellD_[tetIs.cell()] + b[1]*v.x() + b[2]*v.y() + b[3]*v.z(),
+        tets_.interpolate(cellD_, pointD_, p.coordinates(), tetIs),
         scalar(0)
     );
-    drift = drift_ ? t.gradient : Zero;
+    drift = drift_ ? gradient_[tets_.index(tetIs)] : Zero;
 
     if (brownian_)
     {

@@ -11,6 +11,7 @@
 #include "flowFields.H"
 #include "registerSwitch.H"
 #include "interpolation.H"
+#include "volPointInterpolation.H"
 #include "processorPolyPatch.H"
 #include "PstreamBuffers.H"
 #include "addToRunTimeSelectionTable.H"
@@ -197,7 +198,7 @@ void Foam::coagulation::transportModels::frozenFlow::moveOnThreads
                 cloud_, U, outParticles, outNumber, outMass,
                 cloud_.patchInteraction().stick()
             );
-            threadTd.setInterpolation(td.UInterp(), maxCo_, &cellLength_);
+            threadTd.setInterpolation(td);
 
             #pragma omp for schedule(dynamic, 4096)
             for (label i = first; i < nParticles; ++i)
@@ -455,15 +456,7 @@ Foam::vector Foam::coagulation::transportModels::frozenFlow::walkStep
     if (dispersion.nearStickWall(p.cell()))
     {
         advection =
-            dt
-           *(
-                td.UInterp()
-              ? td.UInterp()->interpolate
-                (
-                    p.coordinates(), p.currentTetIndices()
-                )
-              : td.U()[p.cell()]
-            );
+            dt*(td.interpolated() ? td.flowVelocity(p) : td.U()[p.cell()]);
     }
     coag::CounterStream stream(cloud_.seeds()(k, walkStream));
     return dispersion.displacement(p, dt, advection, stream, wallFace);
@@ -508,13 +501,37 @@ void Foam::coagulation::transportModels::frozenFlow::move
     cloud_.index().invalidateSort();
     if (scheme_ != "cell")
     {
-        // The interpolation (its point values) made anew when U changed
-        if (!UInterp_ || &UInterp_->psi() != &U || UInterpVersion_ != flowVersion_)
+        // The interpolation (its point values) made anew when U changed;
+        // cellPoint's sum made on the mesh's tets (meshTets), the same
+        // numbers as interpolationCellPoint's
+        const bool made = UInterpOf_ == &U && UInterpVersion_ == flowVersion_;
+        if (scheme_ == "cellPoint")
         {
-            UInterp_ = interpolation<vector>::New(scheme_, U);
-            UInterpVersion_ = flowVersion_;
+            if (!made)
+            {
+                pointU_ =
+                    volPointInterpolation::New(U.mesh()).interpolate(U)
+                    ().primitiveField();
+            }
+            td.setInterpolation
+            (
+                nullptr, &meshTets::New(cloud_.pMesh()), &pointU_,
+                maxCo_, &cellLength_
+            );
         }
-        td.setInterpolation(UInterp_.get(), maxCo_, &cellLength_);
+        else
+        {
+            if (!made)
+            {
+                UInterp_ = interpolation<vector>::New(scheme_, U);
+            }
+            td.setInterpolation
+            (
+                UInterp_.get(), nullptr, nullptr, maxCo_, &cellLength_
+            );
+        }
+        UInterpOf_ = &U;
+        UInterpVersion_ = flowVersion_;
     }
 
     // The advection with U and the random walk of the dispersion model in
