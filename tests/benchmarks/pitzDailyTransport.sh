@@ -12,8 +12,9 @@
 # is particle-steps per second of transport: the mean particle count times the steps over
 # the transport's wall time (coagulationFoam: its transport timer; OpenFOAM: the execution
 # time of the steps after the first, which is all cloud evolution). Prints every run and the
-# median per configuration.
-#   tests/benchmarks/pitzDailyTransport.sh [OUTDIR] [ROUNDS=3] [STEPS=400]
+# median per configuration. BEFORE=<another checkout, built> runs its coagulationFoam beside
+# this one's in every round (the configurations it has), for before/after pairs.
+#   [BEFORE=DIR] tests/benchmarks/pitzDailyTransport.sh [OUTDIR] [ROUNDS=3] [STEPS=400]
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 . "$here/../../etc/functions"
@@ -171,26 +172,39 @@ cloudFunctions {}
 DICT
 
 # 3. The runs, alternated
-printf "%-44s %5s %12s %12s\n" configuration round particles "Mpsteps_per_s" | tee "$out/runs.txt"
+printf "%-56s %5s %12s %12s\n" configuration round particles "Mpsteps_per_s" | tee "$out/runs.txt"
 rate()   # particles steps seconds
 {
     awk -v n="$1" -v s="$2" -v t="$3" 'BEGIN { printf "%.3f", n*s/t/1e6 }'
 }
+before="${BEFORE:-}"
 for r in $(seq 1 "$rounds"); do
     for cfg in "cellPoint turbulent StrangSAS" "cellPoint turbulent Strang" \
                "cellPoint turbulent Lie" "cellPoint none Lie" "cell none Lie"; do
+      for build in "" ${before:+"$before"}; do
         set -- $cfg
+        label="coagulationFoam"
+        if [ -n "$build" ]; then
+            label="coagulationFoam (before)"
+            grep -q "\"$3\"" "$build/src/coagulationModels/clouds/coagulationCloud/coagulationCloud.C" \
+                || continue
+        fi
         c="$out/run"
         rm -rf "$c"; cp -r "$coag" "$c"
         foamDictionary -entry splitting -set "$3" "$c/constant/coagulationProperties" > /dev/null
         foamDictionary -entry transport -set "{ type frozenFlow; interpolationSchemes { U $1; } }" \
             "$c/constant/coagulationProperties" > /dev/null
         [ "$2" = none ] && foamDictionary -entry dispersion -remove "$c/constant/coagulationProperties" > /dev/null
-        coagulationFoam -case "$c" > "$c/log" 2>&1 || { tail "$c/log"; exit 1; }
+        if [ -n "$build" ]; then
+            (. "$build/etc/bashrc" && coagulationFoam -case "$c") > "$c/log" 2>&1 || { tail "$c/log"; exit 1; }
+        else
+            coagulationFoam -case "$c" > "$c/log" 2>&1 || { tail "$c/log"; exit 1; }
+        fi
         n=$(awk '/^Time = / && /particles = / { s += $NF; k++ } END { printf "%.1f", s/k }' "$c/log")
         ms=$(grep "transport =" "$c/log" | tail -1 | sed 's/.*transport = \([0-9.e+-]*\) ms.*/\1/')
-        printf "%-44s %5d %12s %12s\n" "coagulationFoam $1 $2 $3" "$r" "$n" \
+        printf "%-56s %5d %12s %12s\n" "$label $1 $2 $3" "$r" "$n" \
             "$(rate "$n" 1 "$(awk -v m="$ms" 'BEGIN { print m/1e3 }')")" | tee -a "$out/runs.txt"
+      done
     done
     for d in stochasticDispersionRAS none; do
         c="$out/run"
@@ -199,7 +213,7 @@ for r in $(seq 1 "$rounds"); do
         icoUncoupledKinematicParcelFoam -case "$c" > "$c/log" 2>&1 || { tail -30 "$c/log"; exit 1; }
         read -r n t <<< "$(awk '/Current number of parcels/ { s += $NF; k++ }
             /^ExecutionTime/ { e[++m] = $3 } END { printf "%.1f %.6f", s/k, e[m] - e[1] }' "$c/log")"
-        printf "%-44s %5d %12s %12s\n" "OpenFOAM cellPoint $d" "$r" "$n" \
+        printf "%-56s %5d %12s %12s\n" "OpenFOAM cellPoint $d" "$r" "$n" \
             "$(rate "$n" "$((steps - 1))" "$t")" | tee -a "$out/runs.txt"
     done
 done
@@ -210,5 +224,5 @@ import numpy as np
 rows = [l.rsplit(None, 3) for l in open(sys.argv[1]).read().splitlines()[1:] if l.strip()]
 for key in dict.fromkeys(r[0] for r in rows):
     v = [float(r[3]) for r in rows if r[0] == key]
-    print("  %-44s %8.3f M  (%d runs)" % (key, np.median(v), len(v)))
+    print("  %-56s %8.3f M  (%d runs)" % (key, np.median(v), len(v)))
 PY
