@@ -14,11 +14,12 @@
 # (entering particles are spread over the distance of each transport). With dt = 2.4e-3
 # (Courant 0.6, dx/h = 5/3) the two predictions differ in cell 0 by 48 % of the incepted
 # mass (cells 0..2 together: over 10 standard errors), so a scheme run in the wrong order
-# fails; StrangSAS and Lie differ in cell 0 by 60 %. No two particles may share their (y, z):
-# a cell step that draws from another's streams places its particles where those were. Every cell's time average must agree with
-# its scheme's prediction within |z| <= 6 (the report's 95 % interval; samples in time are
-# correlated, hence the widening), the balances must close, and Strang and StrangSAS must
-# give the same bits on 1 and 2 threads and after a restart.
+# fails; StrangSAS and Lie differ in cell 0 by 60 %. Every cell's time average must agree
+# with its scheme's prediction within |z| <= 6 (the report's 95 % interval; samples in time
+# are correlated, hence the widening), the balances must close, no two particles may share
+# their (y, z) (a cell step that draws from another's streams places its particles where
+# those were), and Strang and StrangSAS must give the same bits on 1 and 2 threads and after
+# a restart.
 . "$(dirname "$0")/caseLib.sh"
 dt=2.4e-3; rate=3e8; cIn=2e5
 

@@ -74,7 +74,8 @@ bool Foam::coagulation::coagulationParticle::move
         }
         else
         {
-            displacement = f*(trackTime*td.velocity(cell()) + dispersal_);
+            displacement =
+                f*trackTime*td.velocity(cell()) + f*dispersal_;
         }
         meshTools::constrainDirection(mesh(), solutionD, displacement);
 

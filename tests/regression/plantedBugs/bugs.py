@@ -812,7 +812,10 @@ BUGS = {
              "workDecomposition: a part's cells taken with every earlier part's (the last part overwrites them)"),
     "B101": (M + "submodels/transportModels/frozenFlow/frozenFlow.C",
              "                if (fresh)\n",
-             "                if (!fresh && td.walk())\n                {\n                    p.dispersal() = walkStep(p, k, dt, walkStream);\n                }\n                if (fresh)\n",
+             "                if (!fresh && walks)\n                {\n                    label wallFace = -1;\n"
+             "                    p.dispersal() =\n"
+             "                        walkStep(p, k, dt, walkStream, threadTd, wallFace);\n"
+             "                }\n                if (fresh)\n",
              "case_parallel",
              "decomposed array transport: a particle handed over draws a new walk step instead of finishing its own"),
     "B102": (M + "clouds/cellStepper/cellStepper.H",
@@ -902,8 +905,8 @@ BUGS = {
              "case_splitting",
              "StrangSAS: the first half cell step missing (half the inception)"),
     "B165": (M + "coagulationParticle/coagulationParticle.C",
-             "            displacement = f*(trackTime*td.velocity(cell()) + dispersal_);\n",
-             "            displacement = f*trackTime*td.velocity(cell());\n",
+             "                f*trackTime*td.velocity(cell()) + f*dispersal_;\n",
+             "                f*trackTime*td.velocity(cell());\n",
              "case_dispersion",
              "one tracking pass: the walk left out of the cell velocity's displacement"),
     "B166": (M + "clouds/meshTets/meshTets.H",

@@ -89,19 +89,7 @@ void Foam::coagulation::cloudFunctions::cellWork::postCellStep()
             step.seconds(celli)
         );
     }
-    ++steps_;
     last_ = std::chrono::steady_clock::now();
-
-    // The field is an AUTO_WRITE object: set before the time writes it,
-    // from the steps since the last write
-    if (cloud_.mesh().time().writeTime())
-    {
-        work_.primitiveFieldRef() = sum_/scalar(steps_);
-        work_.correctBoundaryConditions();
-        sum_ = Zero;
-        steps_ = 0;
-        reportFit();
-    }
 }
 
 
@@ -120,6 +108,19 @@ void Foam::coagulation::cloudFunctions::cellWork::postMove
 
 void Foam::coagulation::cloudFunctions::cellWork::postStep()
 {
+    // A split step may hold two cell steps (StrangSAS): the work of both
+    ++steps_;
+
+    // The field is an AUTO_WRITE object: set before the time writes it,
+    // from the steps since the last write
+    if (cloud_.mesh().time().writeTime())
+    {
+        work_.primitiveFieldRef() = sum_/scalar(steps_);
+        work_.correctBoundaryConditions();
+        sum_ = Zero;
+        steps_ = 0;
+        reportFit();
+    }
     last_ = std::chrono::steady_clock::now();
 }
 

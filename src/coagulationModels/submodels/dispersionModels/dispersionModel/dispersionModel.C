@@ -90,23 +90,25 @@ void Foam::coagulation::dispersionModel::setStickWalls(const boolList& stick)
             }
         }
     }
-    stickFaces_.clear();
+    DynamicList<stickFace> faces;
     forAll(near, celli)
     {
-        cellStickStart_[celli] = label(stickFaces_.size());
+        cellStickStart_[celli] = faces.size();
         for (const label facei : near[celli])
         {
             const vector n = normalised(mesh_.faceAreas()[facei]);
-            stickFaces_.push_back
-            ({
+            const stickFace sf
+            {
                 facei,
                 patches.whichPatch(facei),
                 n,
                 n & mesh_.faceCentres()[facei]
-            });
+            };
+            faces.append(sf);
         }
     }
-    cellStickStart_[mesh_.nCells()] = label(stickFaces_.size());
+    cellStickStart_[mesh_.nCells()] = faces.size();
+    stickFaces_.transfer(faces);
 }
 
 

@@ -114,6 +114,12 @@ Foam::coagulation::dispersionModels::turbulentDispersion::gradient
     const scalar v0 = cellD_[tetIs.cell()];
     const tetPointRef t = tetIs.tet(mesh_);
     const tensor edges(t.b() - t.a(), t.c() - t.a(), t.d() - t.a());
+    // A tet of no volume (a face without a valid base point) holds no
+    // particle: no gradient
+    if (!(mag(det(edges)) > VSMALL))
+    {
+        return Zero;
+    }
     return
         inv(edges)
       & vector

@@ -118,9 +118,11 @@ namespace
     //- How many particles ahead of the move the next is fetched
     constexpr Foam::label prefetchDistance = 8;
 
-    //- Ask for a particle's cache lines before its move reads them
+    //- Ask for a particle's cache lines before its move reads them (a
+    //  hint of GCC and Clang; nothing elsewhere)
     inline void prefetch(const Foam::coagulation::coagulationParticle* p)
     {
+        #ifdef __GNUC__
         const char* bytes = reinterpret_cast<const char*>(p);
         for
         (
@@ -131,6 +133,9 @@ namespace
         {
             __builtin_prefetch(bytes + line);
         }
+        #else
+        (void)p;
+        #endif
     }
 }
 
@@ -276,6 +281,10 @@ void Foam::coagulation::transportModels::frozenFlow::moveOnThreads
         }
         for (label k = first; k < nParticles; ++k)
         {
+            if (outcome_[k] == depositedByWalk)
+            {
+                continue;
+            }
             coagulationParticle& p = *index.particles()[k];
             switch (outcome_[k])
             {
@@ -283,8 +292,6 @@ void Foam::coagulation::transportModels::frozenFlow::moveOnThreads
                     break;
                 case toProcessor:
                     leaving.append(&p);
-                    break;
-                case depositedByWalk:
                     break;
                 case leftByOutflow:
                     td.bookOutflow(p.patch(), p);
