@@ -70,9 +70,14 @@ for scheme in Lie Strang; do
         run "C_${scheme}_4e-4_r$r" additiveKernelDuct $scheme 4e-4 0.4 4e-3 seed $((776 + r))
     done
 done
-# StrangSAS: S(dt/2) A(dt) S(dt/2), part A (its order near the inlet)
+# StrangSAS: S(dt/2) A(dt) S(dt/2), part A (its order near the inlet), and R - 1 more
+# realisations of each (A_StrangSAS_r<k>_<dt>, seed k; pooled with seed 1 by
+# coagulationPost.splittingStudy.pooled, doc/validation.md)
 for dt in 3e-4 6e-4 1.2e-3; do
     run "A_StrangSAS_$dt" additiveKernelDuct StrangSAS $dt $endA $(awk -v d=$dt 'BEGIN { printf "%g", 10 * d }') kernel/K0 1e-30
+    for ((r = 2; r <= R; r++)); do
+        run "A_StrangSAS_r${r}_$dt" additiveKernelDuct StrangSAS $dt $endA $(awk -v d=$dt 'BEGIN { printf "%g", 10 * d }') kernel/K0 1e-30 seed $r
+    done
 done
 run E_Lie_2e-4 additiveKernelDuct Lie 2e-4 0.4 4e-3 seed 777
 run E_Strang_1.2e-3 additiveKernelDuct Strang 1.2e-3 0.4 4.8e-3 seed 777
