@@ -506,6 +506,21 @@ void Foam::coagulation::coagulationCloud::reportTimes() const
     (
         events_, transport_->transfers(), cellStepper_->workSinceStart()
     );
+
+    // Strang tracks every particle twice a step: where the transport takes
+    // most of the time, the other second-order splitting tracks it once
+    const scalar transport =
+        returnReduce(timer_.transportSeconds(), sumOp<scalar>());
+    const scalar cells =
+        returnReduce(timer_.coagulationSeconds(), sumOp<scalar>());
+    if (splitting_ == splittingScheme::Strang && transport > 2*cells)
+    {
+        const label percent = label(100*transport/(transport + cells));
+        Info<< "The transport takes " << percent
+            << " % of the split step's wall time: 'splitting StrangSAS;'"
+            << " (second order too) tracks each particle once a step,"
+            << " Strang twice" << nl << endl;
+    }
 }
 
 
