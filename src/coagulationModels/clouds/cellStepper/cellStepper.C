@@ -146,10 +146,10 @@ void Foam::coagulation::cellStepper::advance
     {
         // OpenFOAM's floating-point traps held over the thread's share of
         // the cells (an overflow in a jump process gives Inf, which the
-        // algorithm's checks name), set once per thread: a set costs about
-        // as much as a small cell's step. The write-back and the placing of
-        // new particles (finite arithmetic on checked values) run with them
-        // held too
+        // algorithm's checks name), set once per thread rather than per
+        // cell (setting the floating-point environment is not cheap). The
+        // write-back and the placing of new particles (finite arithmetic on
+        // checked values) run with them held too
         const caseChecks::trapsHeld traps;
         #pragma omp for schedule(dynamic, 1)
         for (label celli = 0; celli < nCells; ++celli)

@@ -27,27 +27,23 @@ Foam::coagulation::meshTets::meshTets(const polyMesh& mesh)
     points_()
 {
     // A cell's tets together: the particles of a cell, moved one after the
-    // other, find them in the cache
-    const cellList& cells = mesh.cells();
-    const faceList& faces = mesh.faces();
+    // other, find them in the cache. A face's first tet (tetPt 1) marks
+    // where its tets start
     const labelList& owner = mesh.faceOwner();
-    label n = 0;
-    forAll(cells, celli)
-    {
-        for (const label facei : cells[celli])
-        {
-            faceTets_[2*facei + (owner[facei] == celli ? 0 : 1)] = n;
-            n += faces[facei].size() - 2;
-        }
-    }
-    points_.setSize(n);
+    DynamicList<triFace> points;
     forAllTets
     (
         [&](const label i, const tetIndices& tetIs)
         {
-            points_[i] = tetIs.faceTriIs(mesh);
+            const label facei = tetIs.face();
+            if (tetIs.tetPt() == 1)
+            {
+                faceTets_[2*facei + (owner[facei] == tetIs.cell() ? 0 : 1)] = i;
+            }
+            points.append(tetIs.faceTriIs(mesh));
         }
     );
+    points_.transfer(points);
 }
 
 
