@@ -25,6 +25,8 @@
 #include "coagulation/algorithms/CellAlgorithm.hpp"
 #include "coagulation/algorithms/NumberControl.hpp"
 #include "coagulation/algorithms/StepStatistics.hpp"
+#include "coagulation/growth/GrowthLaw.hpp"
+#include "coagulation/growth/Growth.hpp"
 #include "coagulation/transport/Dispersion.hpp"
 #include "coagulation/output/MomentSeriesFile.hpp"
 #include "coagulation/output/SizeDistribution.hpp"

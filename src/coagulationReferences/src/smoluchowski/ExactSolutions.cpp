@@ -30,6 +30,21 @@ std::array<double, 4> constantKernelMoments(double K0, double N0, double t)
     return {N0 / (1.0 + 0.5 * T), N0, N0 * (1.0 + T), N0 * (1.0 + 3.0 * T + 1.5 * T * T)};
 }
 
+std::array<double, 4> constantKernelLinearGrowthMoments(double K0, double N0, double sigma,
+                                                        double t)
+{
+    const std::array<double, 4> m = constantKernelMoments(K0, N0, t);
+    const double e = std::exp(sigma * t);
+    return {m[0], m[1] * e, m[2] * e * e, m[3] * e * e * e};
+}
+
+std::array<double, 2> constantKernelConstantGrowthMoments(double K0, double N0, double g,
+                                                          double t)
+{
+    const double T = K0 * N0 * t;
+    return {N0 / (1.0 + 0.5 * T), N0 + 2.0 * g / K0 * std::log1p(0.5 * T)};
+}
+
 double additiveKernelDensity(double K0, double N0, double t, std::size_t k)
 {
     checkIndex(k);

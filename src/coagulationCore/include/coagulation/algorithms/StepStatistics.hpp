@@ -18,6 +18,10 @@ struct StepStatistics {
     double inceptedMass = 0;         //!< physical mass added by inception = sum(weight*mass)
     double controlMass = 0;          //!< change of sum(w*m) by number control (SWA: zero mean;
                                      //!< DSA: the sample volume changes with it)
+    double grownMass = 0;            //!< change of sum(w*m) by growth (negative: shrinking)
+    std::uint64_t lostParticles = 0; //!< computational particles gone by shrinking
+    double lostNumber = 0;           //!< their physical particles, sum(w)
+    double lostMass = 0;             //!< their mass when they went, sum(w*m)
 
     //- Add another tally (e.g. one cell's, to a run's total)
     StepStatistics& operator+=(const StepStatistics& o)
@@ -29,6 +33,10 @@ struct StepStatistics {
         doublings += o.doublings;
         inceptedMass += o.inceptedMass;
         controlMass += o.controlMass;
+        grownMass += o.grownMass;
+        lostParticles += o.lostParticles;
+        lostNumber += o.lostNumber;
+        lostMass += o.lostMass;
         return *this;
     }
 };

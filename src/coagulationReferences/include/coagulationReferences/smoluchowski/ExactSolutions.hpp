@@ -18,6 +18,17 @@ double constantKernelDensity(double K0, double N0, double t, std::size_t k);
 //- m0 = N0/(1+tau), m1 = N0, m2 = N0 (1 + K0 N0 t), m3 = N0 (1 + 3T + 3T^2/2), T = K0 N0 t.
 std::array<double, 4> constantKernelMoments(double K0, double N0, double t);
 
+//- K = K0 with growth dm/dt = sigma m of every particle, monodisperse start: the closed
+//  moment equations dm0/dt = -K0 m0^2/2, dm1/dt = sigma m1, dm2/dt = 2 sigma m2 + K0 m1^2,
+//  dm3/dt = 3 sigma m3 + 3 K0 m1 m2 give m0 = N0/(1+T/2), m1 = N0 e^{st},
+//  m2 = N0 e^{2st} (1 + T), m3 = N0 e^{3st} (1 + 3T + 3T^2/2), T = K0 N0 t, s = sigma.
+std::array<double, 4> constantKernelLinearGrowthMoments(double K0, double N0, double sigma,
+                                                        double t);
+//- K = K0 with growth dm/dt = g of every particle, monodisperse start: m0 = N0/(1+T/2),
+//  m1 = N0 + (2 g / K0) ln(1 + T/2) (dm1/dt = g m0), T = K0 N0 t; {m0, m1}.
+std::array<double, 2> constantKernelConstantGrowthMoments(double K0, double N0, double g,
+                                                          double t);
+
 //- K = K0 (x+y) (Golovin): n_k = N0 (1-s) (k s)^{k-1} e^{-k s} / k!, s = 1 - exp(-K0 N0 t).
 double additiveKernelDensity(double K0, double N0, double t, std::size_t k);
 //- m0 = N0 e^{-T}, m1 = N0, m2 = N0 e^{2T}, m3 = N0 e^{3T} (3 e^T - 2), T = K0 N0 t.

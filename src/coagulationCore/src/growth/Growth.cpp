@@ -1,0 +1,43 @@
+// coagulationFoam core. Copyright (C) 2025-2026 the coagulationFoam authors
+// SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
+#include "coagulation/growth/Growth.hpp"
+
+namespace coag {
+
+void growPopulation(CellPopulation& pop, const GrowthLaw& law, double dt, double minMass,
+                    StepStatistics& stats)
+{
+    if (law.empty()) return;
+    ParticleVector& P = pop.particles;
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < P.size(); ++i) {
+        Particle p = P[i];
+        const GrowthLaw::Step step = law.advance(p.type.mass, dt, minMass);
+        stats.grownMass += p.weight * (step.mass - p.type.mass);
+        if (step.gone) {
+            ++stats.lostParticles;
+            stats.lostNumber += p.weight;
+            stats.lostMass += p.weight * step.mass;
+            continue;
+        }
+        p.type.mass = step.mass;
+        P[kept++] = p;
+    }
+    P.resize(kept);
+}
+
+void advanceWithGrowth(CellAlgorithm& algorithm, CellPopulation& pop,
+                       const CoagulationKernel& kernel, double inceptionRate,
+                       const GrowthLaw& law, double minMass, double dt, Rng& rng,
+                       StepStatistics& stats)
+{
+    if (law.empty()) {
+        algorithm.advance(pop, kernel, inceptionRate, dt, rng, stats);
+        return;
+    }
+    growPopulation(pop, law, 0.5 * dt, minMass, stats);
+    algorithm.advance(pop, kernel, inceptionRate, dt, rng, stats);
+    growPopulation(pop, law, 0.5 * dt, minMass, stats);
+}
+
+} // namespace coag
