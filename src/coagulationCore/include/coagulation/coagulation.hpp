@@ -32,6 +32,7 @@
 #include "coagulation/output/SizeDistribution.hpp"
 #include "coagulation/statistics/Moments.hpp"
 #include "coagulation/statistics/RunningStatistics.hpp"
+#include "coagulation/statistics/CompensatedSum.hpp"
 #include "coagulation/statistics/CorrelatedMean.hpp"
 #include "coagulation/decomposition/WorkPartition.hpp"
 #include "coagulation/decomposition/CostFit.hpp"

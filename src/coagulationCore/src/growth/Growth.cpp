@@ -1,6 +1,7 @@
 // coagulationFoam core. Copyright (C) 2025-2026 the coagulationFoam authors
 // SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 #include "coagulation/growth/Growth.hpp"
+#include "coagulation/statistics/CompensatedSum.hpp"
 
 namespace coag {
 
@@ -9,21 +10,26 @@ void growPopulation(CellPopulation& pop, const GrowthLaw& law, double dt, double
 {
     if (law.empty()) return;
     ParticleVector& P = pop.particles;
+    // Compensated: the particles of a cell are often of one size, their terms equal
+    CompensatedSum grown, lostNumber, lostMass;
     std::size_t kept = 0;
     for (std::size_t i = 0; i < P.size(); ++i) {
         Particle p = P[i];
         const GrowthLaw::Step step = law.advance(p.type.mass, dt, minMass);
-        stats.grownMass += p.weight * (step.mass - p.type.mass);
+        grown.add(p.weight * (step.mass - p.type.mass));
         if (step.gone) {
             ++stats.lostParticles;
-            stats.lostNumber += p.weight;
-            stats.lostMass += p.weight * step.mass;
+            lostNumber.add(p.weight);
+            lostMass.add(p.weight * step.mass);
             continue;
         }
         p.type.mass = step.mass;
         P[kept++] = p;
     }
     P.resize(kept);
+    stats.grownMass += grown.value();
+    stats.lostNumber += lostNumber.value();
+    stats.lostMass += lostMass.value();
 }
 
 void advanceWithGrowth(CellAlgorithm& algorithm, CellPopulation& pop,

@@ -11,6 +11,8 @@
 #include "coagulationCloud.H"
 #include "OSspecific.H"
 
+#include "coagulation/statistics/CompensatedSum.hpp"
+
 namespace Foam
 {
 namespace coagulation
@@ -83,11 +85,19 @@ Foam::coagulation::cloudFunctions::massBalance::incepted() const
 Foam::coagulation::particleBalance
 Foam::coagulation::cloudFunctions::massBalance::domain() const
 {
+    // Compensated sums: a population of one size (a monodisperse start)
+    // sums equal terms, whose plain sum drifts by up to half a rounding per
+    // particle
+    coag::CompensatedSum number, mass;
     particleBalance b;
     for (const coagulationParticle& p : cloud_)
     {
-        b.add(p.weight(), p.mass());
+        number.add(p.weight());
+        mass.add(p.weight()*p.mass());
+        ++b.particles;
     }
+    b.number = number.value();
+    b.mass = mass.value();
     reduce(b.particles, sumOp<label>());
     reduce(b.number, sumOp<scalar>());
     reduce(b.mass, sumOp<scalar>());
@@ -122,12 +132,20 @@ Foam::scalar Foam::coagulation::cloudFunctions::massBalance::massError() const
     const scalar outflow = returnReduce(outflow_.mass, sumOp<scalar>());
     const scalar control =
         returnReduce(cloud_.events().controlMass, sumOp<scalar>());
+    const scalar grown =
+        returnReduce(cloud_.events().grownMass, sumOp<scalar>());
+    const scalar lost =
+        returnReduce(cloud_.events().lostMass, sumOp<scalar>());
 
     const particleBalance now = domain();
     const scalar expected =
-        initial_.mass + inflow + incepted - outflow + control;
+        initial_.mass + inflow + incepted + grown - outflow - lost + control;
     const scalar scale =
-        max(max(now.mass, initial_.mass + inflow + incepted), VSMALL);
+        max
+        (
+            max(now.mass, initial_.mass + inflow + incepted + max(grown, 0)),
+            VSMALL
+        );
 
     return (now.mass - expected)/scale;
 }
@@ -251,6 +269,10 @@ void Foam::coagulation::cloudFunctions::massBalance::write()
     const scalar fictitious =
         returnReduce(scalar(events.fictitious), sumOp<scalar>());
     const scalar control = returnReduce(events.controlMass, sumOp<scalar>());
+    const scalar grown = returnReduce(events.grownMass, sumOp<scalar>());
+    const scalar lost = returnReduce(events.lostMass, sumOp<scalar>());
+    const scalar lostParticles =
+        returnReduce(scalar(events.lostParticles), sumOp<scalar>());
     const label stalled = returnReduce(stalled_, sumOp<label>());
 
     const particleBalance now = domain();
@@ -263,10 +285,29 @@ void Foam::coagulation::cloudFunctions::massBalance::write()
         << (coagulations > 0 ? fictitious/coagulations : scalar(0))
         << " per real one)" << nl
         << "    particles in/incepted/out  = " << inflow.particles << " / "
-        << incepted.particles << " / " << outflow.particles << nl
-        << "    mass initial + inflow + inception - outflow + control = "
-        << initial_.mass << " + " << inflow.mass << " + " << incepted.mass
-        << " - " << outflow.mass << " + " << control << nl
+        << incepted.particles << " / " << outflow.particles << nl;
+    if (cloud_.growth().active())
+    {
+        // Growth is active on every processor or on none
+        Info<< "    particles gone by shrinking = " << lostParticles
+            << " (number " << returnReduce(events.lostNumber, sumOp<scalar>())
+            << ")" << nl;
+    }
+    // The growth terms where growth models act
+    const bool grows = cloud_.growth().active();
+    Info<< "    mass initial + inflow + inception"
+        << (grows ? " + growth - outflow - loss" : " - outflow")
+        << " + control = " << initial_.mass << " + " << inflow.mass << " + "
+        << incepted.mass;
+    if (grows)
+    {
+        Info<< " + " << grown << " - " << outflow.mass << " - " << lost;
+    }
+    else
+    {
+        Info<< " - " << outflow.mass;
+    }
+    Info<< " + " << control << nl
         << "    mass in domain             = " << now.mass << nl
         << "    mass balance error (rel.)  = " << massError() << nl
         << "    particle balance error     = " << particleError() << nl

@@ -53,11 +53,58 @@ Foam::coagulation::cloudFunctions::momentFields::momentFields
             )
         );
     }
+    if (cloud.growth().active())
+    {
+        growthRate_.reset
+        (
+            new volScalarField
+            (
+                IOobject
+                (
+                    "growthRate",
+                    mesh.time().timeName(),
+                    mesh,
+                    IOobject::NO_READ,
+                    IOobject::AUTO_WRITE
+                ),
+                mesh,
+                dimensionedScalar(dimless/dimVolume/dimTime, Zero),
+                zeroGradientFvPatchScalarField::typeName
+            )
+        );
+        grown_.setSize(mesh.nCells(), Zero);
+    }
     update();
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::coagulation::cloudFunctions::momentFields::postCellStep()
+{
+    if (growthRate_)
+    {
+        const cellStepper& step = cloud_.stepper();
+        forAll(grown_, celli)
+        {
+            grown_[celli] += step.grownMass(celli);
+        }
+    }
+}
+
+
+void Foam::coagulation::cloudFunctions::momentFields::postStep()
+{
+    update();
+    if (growthRate_)
+    {
+        growthRate_->primitiveFieldRef() =
+            grown_/(cloud_.mesh().V()*cloud_.splitDeltaT());
+        growthRate_->correctBoundaryConditions();
+        grown_ = Zero;
+    }
+}
+
 
 void Foam::coagulation::cloudFunctions::momentFields::update()
 {

@@ -60,11 +60,12 @@ void Foam::coagulation::cellStepper::advanceCell
     const label np = index.cellStart()[celli + 1] - start;
     const scalar inceptionRate = cloud_.inception().cellRate(celli);
     const bool incepts = inceptionRate > 0;
+    const growthModelList& growth = cloud_.growth();
     outcome.particles = np;
-    outcome.stepped = np >= 2 || incepts;
 
-    // Without inception a cell needs a pair to change
-    if (np < 2 && !incepts)
+    // Without inception a cell needs a pair to change, or a particle to grow
+    outcome.stepped = np >= 2 || incepts || (np == 1 && growth.active());
+    if (!outcome.stepped)
     {
         return;
     }
@@ -86,8 +87,21 @@ void Foam::coagulation::cellStepper::advanceCell
     // the other threads are stepping share its cache lines
     w.events = coag::StepStatistics();
     w.rng.engine().seed(cloud_.seeds()(celli, stream));
-    (incepts ? w.algorithm : w.algorithmNoInception)
-        ->advance(celli, population, inceptionRate, dt, w.rng, w.events);
+    const cellAlgorithm& algorithm =
+        incepts ? *w.algorithm : *w.algorithmNoInception;
+    if (growth.active())
+    {
+        growth.law(celli, w.law);
+        algorithm.advance
+        (
+            celli, population, inceptionRate, w.law, growth.minimumMass(),
+            dt, w.rng, w.events
+        );
+    }
+    else
+    {
+        algorithm.advance(celli, population, inceptionRate, dt, w.rng, w.events);
+    }
     outcome.events = w.events;
 
     // Write the cell's new state back: survivors in place, new particles
@@ -227,7 +241,8 @@ void Foam::coagulation::cellStepper::advance
         workSum_ += work(celli);
 
         // Particles removed in the cell: DSA merges (including any
-        // incepted and merged away within this step) and halvings
+        // incepted and merged away within this step), halvings, and those
+        // gone by shrinking
         removed +=
             label(outcome.events.inceptions) - label(outcome.born.size())
           + label(outcome.died.size());

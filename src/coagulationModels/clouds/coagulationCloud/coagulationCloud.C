@@ -91,6 +91,7 @@ Foam::coagulation::coagulationCloud::coagulationCloud
     fields_(nullptr),
     kernel_(),
     inception_(),
+    growth_(),
     algorithm_(),
     algorithmNoInception_(),
     nThreads_(1),
@@ -121,7 +122,7 @@ Foam::coagulation::coagulationCloud::coagulationCloud
             "algorithm", "kernel", "inception", "inflow", "transport",
             "statisticalWeight", "seed", "sampling", "numberControl",
             "splitting", "patchInteraction", "dispersion",
-            "initialPopulation", "cloudFunctions", "particles"
+            "initialPopulation", "cloudFunctions", "particles", "growth"
         }
     );
     caseChecks::cellVolumes(mesh_);
@@ -166,6 +167,20 @@ Foam::coagulation::coagulationCloud::coagulationCloud
     (
         properties_.subDict("inception"), mesh_, scaling_.particleWeight()
     );
+
+    growth_.reset(new growthModelList(properties_, mesh_));
+    if
+    (
+        growth_->active() && inception_->core().rate > 0
+     && !(inception_->core().type.mass > growth_->minimumMass())
+    )
+    {
+        FatalIOErrorInFunction(properties_)
+            << "The incepted particles' mass " << inception_->core().type.mass
+            << " is not above the minimum mass " << growth_->minimumMass()
+            << " of 'growth' in " << properties_.name() << ": every new"
+            << " particle would be gone at once" << nl << exit(FatalIOError);
+    }
 
     const coag::NumberControl control = readNumberControl();
     Info<< "Selecting cell algorithm " << algorithmName_ << endl;
