@@ -160,8 +160,28 @@ brownian="type Brownian; T 1500; p 1e5;"
 expectFatal brownianNoParticles "needs the particles' material" -entry kernel -set "{ $brownian }"
 expectFatal diameterNoParticles "inception (its 'diameter') needs the particles' material" -entry inception -set "{ rate 1e10; diameter 1e-8; }"
 expectFatal massAndDiameter    "exactly one of 'mass'" -entry inception -set "{ rate 1e10; mass 1; diameter 1e-8; }"
+expectFatal growthNoParticles  "growth model 'coat' needs the particles' material" -entry growth -set "{ coat { type surface; rate 1e-5; } }"
 (cd "$base" && foamDictionary constant/coagulationProperties -entry particles \
     -add "{ density 1800; massUnit 9.42e-22; }" > /dev/null)
+
+# Growth models
+vapour="type condensation; concentration 1e-5; molarMass 0.098; diffusivity 1e-5; T 400;"
+expectFatal growthNotDict      "'growth'.*must be a dictionary" -entry growth -set 5
+expectFatal growthUnknownModel "sintering"        -entry growth -set "{ g { type sintering; } }"
+expectFatal growthNoType       "type"             -entry growth -set "{ g { rate 1; } }"
+expectFatal growthTypo         "rte"              -entry growth -set "{ g { type constant; rte 1; } }"
+expectFatal growthMissingRate  "rate"             -entry growth -set "{ g { type linear; } }"
+expectFatal growthNoModel      "lists no growth model" -entry growth -set "{ minimumMass 0; }"
+expectFatal growthUnknownEntry "minimumMas"       -entry growth -set "{ minimumMas 0; g { type constant; rate 1; } }"
+expectFatal growthBothMinimum  "not both"         -entry growth -set "{ minimumMass 0; minimumDiameter 1e-9; g { type constant; rate 1; } }"
+expectFatal growthNegativeMinimum "minimumMass"   -entry growth -set "{ minimumMass -1; g { type constant; rate 1; } }"
+expectFatal growthMinimumAboveInception "not above the minimum mass" -entry growth -set "{ minimumMass 2; g { type constant; rate 1; } }"
+expectFatal growthMissingVapourField "'cVapour'.*0/cVapour" -entry growth -set "{ v { $vapour concentration cVapour; } }"
+expectFatal growthNegativeDiffusivity "'diffusivity'" -entry growth -set "{ v { type condensation; concentration 1e-5; molarMass 0.098; diffusivity -1e-5; T 400; } }"
+expectFatal growthAccommodation "'accommodation'" -entry growth -set "{ v { $vapour accommodation 1.5; } }"
+expectFatal growthRegime       "slip"             -entry growth -set "{ v { $vapour regime slip; } }"
+expectFatal growthNoT          "needs entry 'T'"  -entry growth -set "{ v { type condensation; concentration 1e-5; molarMass 0.098; diffusivity 1e-5; } }"
+expectFatal growthNegativeConcentration "'concentration'" -entry growth -set "{ v { type condensation; concentration -1; molarMass 0.098; diffusivity 1e-5; T 400; } }"
 expectFatal brownianRegime     "slipFlow"         -entry kernel -set "{ $brownian regime slipFlow; }"
 expectFatal brownianTypo       "regim"            -entry kernel -set "{ $brownian regim transition; }"
 expectFatal brownianNoTField   "'Brownian'.*'Tgas'.*0/Tgas" -entry kernel -set "{ type Brownian; T Tgas; p 1e5; }"

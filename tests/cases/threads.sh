@@ -6,7 +6,8 @@
 # the results must be identical, bit for bit, on 1 and 2 threads and to the reference
 # (OptimisationSwitches coagulationCloudMove 1: OpenFOAM's Cloud::move over the linked
 # list): fields, particles, event counts and the balance (SWA; DSA2, which also removes
-# particles; inflow through the inlet with outflow through the outlet).
+# particles; SWA with particles shrinking away; inflow through the inlet with outflow through
+# the outlet).
 . "$(dirname "$0")/caseLib.sh"
 
 # runThreads name tutorial endTime writeInterval [entry value]...: the case on 1 and 2
@@ -70,6 +71,14 @@ for alg in SWA DSA2; do
     runThreads "$alg" additiveKernelDuct 0.08 0.04 algorithm "$alg" statisticalWeight/n 1024
     sameOnThreads "$alg" 0.04 0.08
 done
+
+# Growth around the jump process, particles shrinking away below a minimum mass (removed in
+# the cell step like DSA's merges)
+runThreads growth additiveKernelDuct 0.08 0.04 algorithm SWA statisticalWeight/n 1024 \
+    growth "{ minimumMass 0.9; shrink { type linear; rate -5; } }"
+sameOnThreads growth 0.04 0.08
+gone=$(grep "particles gone by shrinking" "$workDir/threads_growth_2/log.coagulationFoam" | tail -1 | awk '{print $6}')
+[ "${gone:-0}" -gt 0 ] || fail "growth: no particle shrank away"
 
 # Inflow only: particles enter through the inlet and leave through the outlet
 runThreads inflow constantKernelDuct 0.3 0.3 inception/rate 0 inflow/density 1e7 statisticalWeight/n 512
