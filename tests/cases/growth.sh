@@ -175,7 +175,15 @@ if end == "0.03":
 print("0.08 s: gone %s particles, number %s (initial %.6g); growth %.10g (exact %.10g), "
       "loss %.10g (exact %.10g), initial mass %.10g"
       % (gone[0], gone[1], number0, grown, -number0 * (m0 - mmin), lost, number0 * mmin, initial))
-ok = int(gone[0]) == 16 * 20
+# sources.csv: the growth and loss rows as the log's
+import csv
+rows = {r["source"]: r for r in csv.DictReader(open("postProcessing/coagulationBalance/sources.csv"))
+        if r["time"] == end}
+print("sources.csv at %s: growth %s, loss %s particles, mass %s"
+      % (end, rows["growth"]["mass"], rows["loss"]["particles"], rows["loss"]["mass"]))
+ok = abs(float(rows["growth"]["mass"]) / grown - 1) < 1e-12
+ok &= abs(float(rows["loss"]["mass"]) / lost - 1) < 1e-12 and rows["loss"]["particles"] == gone[0]
+ok &= int(gone[0]) == 16 * 20
 ok &= abs(float(gone[1]) / number0 - 1) < 1e-12
 ok &= abs(grown / (-number0 * (m0 - mmin)) - 1) < 1e-12
 ok &= abs(lost / (number0 * mmin) - 1) < 1e-12

@@ -76,9 +76,25 @@ do
     cmp -s "$workDir/restart_growth_full/0.08/$f" "$workDir/restart_growth_split/0.08/$f" \
         || fail "growth: 0.08/$f differs between the full and the restarted run"
 done
+# sources.csv counts from the case's first start: after the restart, the full run's rows
+"$COAGULATIONFOAM_PYTHON" - "$workDir/restart_growth_full/postProcessing/coagulationBalance/sources.csv" \
+    "$workDir/restart_growth_split/postProcessing/coagulationBalance/sources.csv" <<'PY' \
+    || fail "growth: sources.csv after the restart differs from the full run's"
+import csv, sys
+rows = [{r["source"]: r for r in csv.DictReader(open(f)) if r["time"] == "0.08"} for f in sys.argv[1:3]]
+assert sorted(rows[0]) == ["growth", "inception", "inflow", "loss"], rows[0].keys()
+for source, a in rows[0].items():
+    b = rows[1][source]
+    assert a["particles"] == b["particles"], (source, a, b)
+    for q in ("number", "mass"):
+        assert abs(float(a[q]) - float(b[q])) <= 1e-12 * abs(float(a[q])), (source, q, a, b)
+    print("%s at 0.08: %s particles, number %.6g, mass %.6g (as the full run)"
+          % (source, a["particles"], float(a["number"]), float(a["mass"])))
+assert float(rows[0]["growth"]["mass"]) < 0 and int(rows[0]["loss"]["particles"]) > 0
+PY
 grep "particles gone by shrinking" "$workDir/restart_growth_full/log.coagulationFoam" | tail -1 \
     | awk '{ exit !($6 > 0) }' || fail "growth: no particle shrank away"
-echo "PASS restart with growth: 0.08/M0..M3, growthRate and all particles identical after a restart from 0.04"
+echo "PASS restart with growth: 0.08/M0..M3, growthRate, all particles and sources.csv identical after a restart from 0.04"
 
 n=$(grep -c . "$full/0.2/lagrangian/coagulationCloud/mass" || true)
 [ "$n" -gt 0 ] || fail "no particles written"

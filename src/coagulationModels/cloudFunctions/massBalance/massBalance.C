@@ -8,6 +8,7 @@
 #include "massBalance.H"
 #include "IFstream.H"
 #include "OFstream.H"
+#include "OStringStream.H"
 #include "coagulationCloud.H"
 #include "OSspecific.H"
 
@@ -20,6 +21,9 @@ namespace coagulation
 namespace cloudFunctions
 {
     defineTypeNameAndDebug(massBalance, 0);
+
+    //- The rows of sources.csv
+    static const wordList sourceNames({"inflow", "inception", "growth", "loss"});
 }
 }
 }
@@ -38,9 +42,31 @@ Foam::coagulation::cloudFunctions::massBalance::massBalance
     outflow_(),
     patches_(cloud.pMesh().boundaryMesh().size()),
     previous_(cloud.pMesh().boundaryMesh().size()),
+    previousSources_(sourceNames.size()),
     stalled_(0)
 {
     initial_ = domain();
+
+    // A restart: what the sources brought before it (written by the master)
+    const fileName sources
+    (
+        cloud.mesh().time().timePath()/"uniform"/"coagulationSourceBalance"
+    );
+    if (Pstream::master() && isFile(sources))
+    {
+        IFstream is(sources);
+        const dictionary dict(is);
+        forAll(sourceNames, i)
+        {
+            if (dict.found(sourceNames[i]))
+            {
+                const dictionary& d = dict.subDict(sourceNames[i]);
+                previousSources_[i].particles = d.get<label>("particles");
+                previousSources_[i].number = d.get<scalar>("number");
+                previousSources_[i].mass = d.get<scalar>("mass");
+            }
+        }
+    }
 
     // A restart: what left per patch before it (written by the master)
     const fileName file
@@ -252,6 +278,65 @@ void Foam::coagulation::cloudFunctions::massBalance::writePatches() const
 }
 
 
+void Foam::coagulation::cloudFunctions::massBalance::writeSources() const
+{
+    const coag::StepStatistics& events = cloud_.events();
+    List<particleBalance> now(sourceNames.size());
+    now[0] = inflow_;
+    now[1] = incepted();
+    now[2].mass = events.grownMass;
+    now[3].particles = label(events.lostParticles);
+    now[3].number = events.lostNumber;
+    now[3].mass = events.lostMass;
+
+    const Time& time = cloud_.mesh().time();
+    dictionary totals;
+    OStringStream rows;
+    forAll(now, i)
+    {
+        particleBalance b(now[i]);
+        reduce(b.particles, sumOp<label>());
+        reduce(b.number, sumOp<scalar>());
+        reduce(b.mass, sumOp<scalar>());
+        b.particles += previousSources_[i].particles;
+        b.number += previousSources_[i].number;
+        b.mass += previousSources_[i].mass;
+        dictionary d;
+        d.add("particles", b.particles);
+        d.add("number", b.number);
+        d.add("mass", b.mass);
+        totals.add(sourceNames[i], d);
+        rows.precision(17);
+        rows<< time.timeName() << ',' << sourceNames[i] << ',' << b.particles
+            << ',' << b.number << ',' << b.mass << nl;
+    }
+    if (!Pstream::master())
+    {
+        return;
+    }
+    const fileName dir(time.globalPath()/"postProcessing"/"coagulationBalance");
+    mkDir(dir);
+    const fileName file(dir/"sources.csv");
+    const bool fresh = !isFile(file);
+    OFstream csv
+    (
+        file, IOstream::ASCII, IOstream::currentVersion,
+        IOstream::UNCOMPRESSED, true
+    );
+    if (fresh)
+    {
+        csv << "time,source,particles,number,mass" << nl;
+    }
+    csv << rows.str().c_str();
+
+    const fileName uniform(time.timePath()/"uniform");
+    mkDir(uniform);
+    OFstream os(uniform/"coagulationSourceBalance");
+    os.precision(17);
+    totals.write(os, false);
+}
+
+
 void Foam::coagulation::cloudFunctions::massBalance::write()
 {
     particleBalance inflow(inflow_), incepted(this->incepted());
@@ -314,6 +399,7 @@ void Foam::coagulation::cloudFunctions::massBalance::write()
         << "    particles held at a face   = " << stalled << endl;
 
     writePatches();
+    writeSources();
     check();
 }
 

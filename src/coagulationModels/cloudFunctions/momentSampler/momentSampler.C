@@ -202,6 +202,11 @@ void Foam::coagulation::cloudFunctions::momentSampler::flush()
         const coag::StepStatistics& events = cloud_.events();
         writer_->stageAttribute("coagulations", double(events.coagulations));
         writer_->stageAttribute("fictitious", double(events.fictitious));
+        // and what growth added (negative: took) and the shrinking removed
+        writer_->stageAttribute("grownMass", events.grownMass);
+        writer_->stageAttribute("lostParticles", double(events.lostParticles));
+        writer_->stageAttribute("lostNumber", events.lostNumber);
+        writer_->stageAttribute("lostMass", events.lostMass);
         writer_->flush();
         lastFlushed_ = cloud_.pMesh().time().value();
     }
