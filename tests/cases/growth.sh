@@ -8,7 +8,9 @@
 #                         (d = d0 + 2 k_s t / rho), of free-molecular condensation
 #                         (d(d)/dt = alpha cbar dc / (2 rho)), of continuum condensation
 #                         (d(d^2)/dt = 8 D dc / rho) and of transition condensation (the
-#                         Fuchs-Sutugin rate's time to grow from d0 to d, in closed form)
+#                         Fuchs-Sutugin rate's time to grow from d0 to d, in closed form); the
+#                         growthRate field of the surface growth, the last step's mass gain
+#                         per volume and time
 #   oxidation             surface oxidation from a field, factor -1, minimumDiameter 2 nm: before
 #                         the exact time the particles reach 2 nm none is gone and the size is
 #                         exact; after it every particle is gone, booked as gone by shrinking
@@ -111,6 +113,15 @@ dc = c - cs
 cbar = np.sqrt(8 * 8.314462618 * T / (np.pi * M))
 if model == "surface":
     exact = d0 + 2 * 1e-4 * (1 + np.arange(16) / 16.0) * t / rho
+    # growthRate: the last step's (0.03 to 0.04 s) mass per volume and time
+    dOf = lambda tt: d0 + 2 * 1e-4 * (1 + np.arange(16) / 16.0) * tt / rho
+    mOf = lambda tt: rho * np.pi * dOf(tt) ** 3 / 6
+    rate = np.broadcast_to(read_field(".", "0.04", "growthRate"), 16)
+    rateExact = m0 * (mOf(0.04) - mOf(0.03)) / 0.01
+    rateErr = np.abs(rate / rateExact - 1).max()
+    print("surface: growthRate %.4e .. %.4e kg/(m3 s), exact to %.1e" % (rate.min(), rate.max(), rateErr))
+    if rateErr > 1e-9:
+        sys.exit(1)
 elif model == "freeMolecular":
     exact = np.full(16, d0 + alpha * cbar * dc * t / (2 * rho))
 elif model == "continuum":
