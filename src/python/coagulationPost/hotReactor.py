@@ -4,6 +4,15 @@ probes (sizeDistribution 'psdAxis', postProcessing/psdAxis/<last write>/) agains
 plug-flow solution of plugFlowReference (results/plugFlow.csv, plugFlowSizes.csv).
 
   python3 -m coagulationPost.hotReactor --case . --out results [--no-plots]
+                                       [--growth-case growth]
+  python3 -m coagulationPost.hotReactor --case growth --surface-rate A Ea
+
+With --growth-case, the same function of a second run of the case with growth (the tutorial's
+growth/, surface growth at the local temperature) goes beside it: OUT/psdGrowth.png (the size
+distributions at three probes with and without growth) and OUT/axialGrowth.csv (d10 and M0 of
+both runs at every probe). --surface-rate writes the field kSurface = A exp(-Ea/(R T)) of the
+case's start time from its T (an Arrhenius surface growth rate [kg/(m2 s)], Ea in J/mol) and
+exits.
 
 Writes OUT/axial.csv (each probe: x, the residence time and T of the plug flow, coagulationFoam's
 M0 and count mean diameter d10 with their 95 % intervals, the plug flow's), OUT/psd.png
@@ -18,6 +27,7 @@ import argparse
 import csv
 import math
 import os
+import re
 import sys
 
 import numpy as np
@@ -41,6 +51,66 @@ def bin_sizes(masses, numbers, upper):
     return out
 
 
+GAS_CONSTANT = 8.314462618
+
+
+def internal_field(text):
+    """The internal field of a volScalarField file's text: a list (nonuniform) or a float."""
+    m = re.search(r"internalField\s+nonuniform\s+List<scalar>\s*(\d+)\s*\(([^)]*)\)", text)
+    if m:
+        return np.array(m.group(2).split(), dtype=float)
+    m = re.search(r"internalField\s+uniform\s+([^;]+);", text)
+    if m is None:
+        raise psdlib.InputError("no internalField in the field file")
+    return float(m.group(1))
+
+
+def patch_types(case):
+    """(name, type) of each patch of constant/polyMesh/boundary."""
+    with open(os.path.join(case, "constant", "polyMesh", "boundary")) as f:
+        text = f.read()
+    # after the header's dictionary (no braces inside it), each patch's dictionary
+    body = text[text.index("}", text.index("FoamFile")) + 1:]
+    return re.findall(r"(\w+)\s*\{[^}]*?\btype\s+(\w+)\s*;", body)
+
+
+def surface_rate_field(case, time, A, Ea, name="kSurface"):
+    """Write <case>/<time>/<name>: k_s = A exp(-Ea/(R T)) [kg/(m2 s)] of each cell from the
+    case's T at that time; zeroGradient on every patch but the empty ones. Returns k_s."""
+    with open(os.path.join(case, time, "T")) as f:
+        T = internal_field(f.read())
+    k = A * np.exp(-Ea / (GAS_CONSTANT * np.asarray(T, float)))
+    values = ("nonuniform List<scalar> %d\n(\n%s\n)" % (k.size, "\n".join("%.17g" % v for v in k))
+              if k.ndim else "uniform %.17g" % k)
+    patches = "\n".join("    %s { type %s; }" % (p, "empty" if t == "empty" else "zeroGradient")
+                         for p, t in patch_types(case))
+    with open(os.path.join(case, time, name), "w") as f:
+        f.write("FoamFile\n{\n    version 2.0;\n    format ascii;\n    class volScalarField;\n"
+                "    object %s;\n}\n\ndimensions [1 -2 -1 0 0 0 0];\n\ninternalField %s;\n\n"
+                "boundaryField\n{\n%s\n}\n" % (name, values, patches))
+    return k
+
+
+def foam_psd(case, name):
+    """A run's averaged size distribution at the probes: x of the probes, the bins' lower
+    and upper masses, the mean and 95 % interval per probe and bin, the derived rows by
+    (probe, quantity), and the sample file's attributes."""
+    samples = psdlib.read(case, name)
+    rows, derived = psdlib.read_csv(case, name)
+    xs = np.asarray(samples["centres"])[:, 0]  # the probes on the axis
+    bins = sorted({int(r["bin"]) for r in rows if 0 <= int(r["bin"])})
+    nb = len(bins)
+    lower, upper = np.zeros(nb), np.zeros(nb)
+    mean, ci = np.zeros((len(xs), nb)), np.zeros((len(xs), nb))
+    for r in rows:
+        i, b = int(r["region"]), int(r["bin"])
+        if 0 <= b < nb:
+            lower[b], upper[b] = r["lower"], r["upper"]
+            mean[i, b], ci[i, b] = r["mean"], r["ci95"]
+    der = {(int(r["region"]), r["quantity"]): r for r in derived}
+    return xs, lower, upper, mean, ci, der, samples["attrs"]
+
+
 def main(argv=None):
     try:
         return plots(argv)
@@ -55,35 +125,26 @@ def plots(argv):
     ap.add_argument("--out", default="results")
     ap.add_argument("--name", default="psdAxis")
     ap.add_argument("--no-plots", action="store_true")
+    ap.add_argument("--growth-case", default=None)
+    ap.add_argument("--surface-rate", nargs=2, type=float, metavar=("A", "Ea"), default=None)
     a = ap.parse_args(argv)
+    if a.surface_rate is not None:
+        k = surface_rate_field(a.case, "0", *a.surface_rate)
+        print("kSurface = %g exp(-%g/(R T)): %.4g to %.4g kg/(m2 s)"
+              % (a.surface_rate[0], a.surface_rate[1], np.min(k), np.max(k)))
+        return 0
     os.makedirs(a.out, exist_ok=True)
 
-    samples = psdlib.read(a.case, a.name)
-    rho = float(samples["attrs"]["density"])
-    unit = float(samples["attrs"]["massUnit"])
+    xs, lower, upper, mean, ci, der, attrs = foam_psd(a.case, a.name)
+    nreg, nb = mean.shape
+    rho = float(attrs["density"])
+    unit = float(attrs["massUnit"])
     if not rho > 0:
         raise psdlib.InputError("the size distribution '%s' of %s has no particle density: "
                                 "give the case a 'particles' entry" % (a.name, a.case))
 
     def diam_nm(m):
         return 1e9 * (6.0 * np.asarray(m, float) * unit / (math.pi * rho)) ** (1.0 / 3.0)
-
-    # coagulationFoam: the solver's averages at the last write time
-    rows, derived = psdlib.read_csv(a.case, a.name)
-    xs = np.asarray(samples["centres"])[:, 0]  # the probes on the axis
-    nreg = len(xs)
-    bins = sorted({int(r["bin"]) for r in rows if 0 <= int(r["bin"])})
-    nb = len(bins)
-    lower = np.zeros(nb)
-    upper = np.zeros(nb)
-    mean = np.zeros((nreg, nb))
-    ci = np.zeros((nreg, nb))
-    for r in rows:
-        i, b = int(r["region"]), int(r["bin"])
-        if 0 <= b < nb:
-            lower[b], upper[b] = r["lower"], r["upper"]
-            mean[i, b], ci[i, b] = r["mean"], r["ci95"]
-    der = {(int(r["region"]), r["quantity"]): r for r in derived}
 
     # the plug flow: along the axis, and its sizes at the probes
     plug = read_rows(os.path.join(a.out, "plugFlow.csv"))
@@ -127,6 +188,29 @@ def plots(argv):
         w = csv.DictWriter(f, fieldnames=list(out_rows[0]))
         w.writeheader()
         w.writerows(out_rows)
+    growth = None
+    if a.growth_case is not None:
+        growth = foam_psd(a.growth_case, a.name)
+        if len(growth[0]) != nreg or not np.allclose(growth[1], lower):
+            raise psdlib.InputError("the growth case's '%s' has other probes or bins" % a.name)
+        gder = growth[5]
+        grows = []
+        for i, x in enumerate(xs):
+            grows.append({
+                "x": x,
+                "d10_nm": 1e9 * der[(i, "d10")]["mean"],
+                "d10_nm_ci95": 1e9 * der[(i, "d10")]["ci95"],
+                "d10_nm_growth": 1e9 * gder[(i, "d10")]["mean"],
+                "d10_nm_growth_ci95": 1e9 * gder[(i, "d10")]["ci95"],
+                "M0": der[(i, "M0")]["mean"], "M0_growth": gder[(i, "M0")]["mean"],
+            })
+            print("x = %.3f m: d10 without growth %.3f +- %.3f nm, with growth %.3f +- %.3f nm"
+                  % (x, grows[-1]["d10_nm"], grows[-1]["d10_nm_ci95"],
+                     grows[-1]["d10_nm_growth"], grows[-1]["d10_nm_growth_ci95"]))
+        with open(os.path.join(a.out, "axialGrowth.csv"), "w", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=list(grows[0]))
+            w.writeheader()
+            w.writerows(grows)
     if a.no_plots:
         return 0
 
@@ -174,6 +258,33 @@ def plots(argv):
     fig.tight_layout()
     fig.savefig(os.path.join(a.out, "meanDiameter.png"), dpi=120)
     plt.close(fig)
+
+    if growth is not None:
+        gmean, gci = growth[3], growth[4]
+        fig, ax = plt.subplots(figsize=(7.5, 5))
+        for c, i in enumerate(sorted({0, nreg // 2, nreg - 1})):
+            col = "C%d" % c
+            for m, e, style, what in ((mean[i], ci[i], "--", "without growth"),
+                                      (gmean[i], gci[i], "-", "with growth")):
+                y, dy = m / dlog, e / dlog
+                ax.plot(centre_nm[holds], y[holds], style, color=col,
+                        label="x = %.2f m, %s" % (xs[i], what))
+                ax.fill_between(centre_nm[holds], np.maximum(y - dy, 0)[holds], (y + dy)[holds],
+                                color=col, alpha=0.15, lw=0)
+        top = max(np.max(mean / dlog), np.max(gmean / dlog))
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_ylim(top * 1e-3, top * 2)
+        used = np.any(mean > 0, axis=0) | np.any(gmean > 0, axis=0)
+        ax.set_xlim(0.9 * centre_nm[used].min(), 1.2 * centre_nm[used].max())
+        ax.set_xlabel("d [nm]")
+        ax.set_ylabel(r"dN/dlog$_{10}$d [m$^{-3}$]")
+        ax.set_title("Size distribution on the axis with surface growth (solid) and without\n"
+                     "(dashed), 95 % intervals shaded")
+        ax.legend(fontsize=8)
+        fig.tight_layout()
+        fig.savefig(os.path.join(a.out, "psdGrowth.png"), dpi=120)
+        plt.close(fig)
     return 0
 
 

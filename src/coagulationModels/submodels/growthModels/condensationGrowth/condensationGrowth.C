@@ -100,8 +100,9 @@ Foam::coagulation::growthModels::condensationGrowth::condensationGrowth
     b_ = material.diameter(1);
 
     Info<< "Growth " << name << ": condensation (" << regimeNames[regime_]
-        << "), c " << concentration_.range() << ", c_s "
-        << saturation_.range() << " kg/m3, T " << T_.range() << " K" << endl;
+        << "), c " << concentration_.range().c_str() << ", c_s "
+        << saturation_.range().c_str() << " kg/m3, T "
+        << T_.range().c_str() << " K" << endl;
 }
 
 

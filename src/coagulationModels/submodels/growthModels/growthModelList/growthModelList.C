@@ -9,6 +9,31 @@
 #include "particleMaterial.H"
 #include "caseChecks.H"
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- FatalIOError for an entry of dict that is neither a dictionary (a growth
+//  model's) nor one of valid
+void checkEntries(const Foam::dictionary& dict, const Foam::wordList& valid)
+{
+    for (const Foam::entry& e : dict)
+    {
+        if (!e.isDict() && !valid.found(e.keyword()))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry '" << e.keyword() << "' of " << dict.name()
+                << " is neither one of " << valid << " nor a growth model's"
+                << " dictionary (name { type <type>; ... })" << Foam::nl
+                << Foam::exit(Foam::FatalIOError);
+        }
+    }
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::coagulation::growthModelList::growthModelList
@@ -32,19 +57,12 @@ Foam::coagulation::growthModelList::growthModelList
             << " ... } }" << nl << exit(FatalIOError);
     }
     const dictionary& dict = properties.subDict("growth");
+    checkEntries(dict, {"minimumMass", "minimumDiameter"});
     for (const entry& e : dict)
     {
         if (e.isDict())
         {
             append(growthModel::New(e.keyword(), e.dict(), mesh));
-        }
-        else if (e.keyword() != "minimumMass" && e.keyword() != "minimumDiameter")
-        {
-            FatalIOErrorInFunction(dict)
-                << "Entry '" << e.keyword() << "' of " << dict.name()
-                << " is neither 'minimumMass', 'minimumDiameter' nor a growth"
-                << " model's dictionary (name { type <type>; ... })" << nl
-                << exit(FatalIOError);
         }
     }
     if (dict.found("minimumMass") && dict.found("minimumDiameter"))

@@ -49,7 +49,7 @@ Foam::coagulation::growthModels::surfaceGrowth::surfaceGrowth
         factor*pi*std::pow(6/(pi*material.density), 2.0/3.0)
        /std::cbrt(material.massUnit);
 
-    Info<< "Growth " << name << ": surface, k_s " << rate_.range();
+    Info<< "Growth " << name << ": surface, k_s " << rate_.range().c_str();
     if (factor != 1)
     {
         Info<< " times " << factor;
