@@ -32,6 +32,12 @@ TEST(GrowthLaw, ClosedFormsAreTheExactSolutions)
     const double zContinuum = std::pow(m0, 2.0 / 3.0) + 2.0 * 0.8 * dt / 3.0;
     EXPECT_NEAR(continuum.advance(m0, dt, 0.0).mass / std::pow(zContinuum, 1.5), 1.0, 1e-14);
 
+    // Any other exponent below 1: m^(1-q) linear in time
+    GrowthLaw half;
+    half.addPower(0.8, 0.5);
+    const double zHalf = std::sqrt(m0) + 0.5 * 0.8 * dt;
+    EXPECT_NEAR(half.advance(m0, dt, 0.0).mass / (zHalf * zHalf), 1.0, 1e-14);
+
     // Terms of one exponent add: still one closed form
     GrowthLaw twice;
     twice.addPower(0.5, 2.0 / 3.0);

@@ -938,7 +938,7 @@ BUGS = {
              "        const double z = (p == 1.0 ? m : std::pow(m, p)) + p * c * dt;\n",
              "        const double z = (p == 1.0 ? m : std::pow(m, p)) + c * dt;\n",
              GROWTHCORE + "|case_growthExact",
-             "growth: the closed form of dm/dt = c m^q without the factor 1 - q"),
+             "growth: the closed form of dm/dt = c m^q (q other than 0, 1/3, 2/3, 1) without the factor 1 - q"),
     "B171": ("src/coagulationCore/src/growth/GrowthLaw.cpp",
              "b5 = -2187.0 / 6784, b6",
              "b5 = -2187.0 / 6785, b6",
@@ -999,6 +999,11 @@ BUGS = {
              "        law.addPower(rate_, 0);\n",
              "case_growthDuct|case_growthMomentsSWA",
              "linear growth: dm/dt = sigma for sigma m"),
+    "B183": ("src/coagulationCore/src/growth/GrowthLaw.cpp",
+             "        const double z = std::cbrt(m) + c * dt / 3.0;\n",
+             "        const double z = std::cbrt(m) + c * dt / 2.0;\n",
+             GROWTHCORE + "|case_growthExact",
+             "growth: the surface law's m^(1/3) at a rate c/2 for c/3"),
 }
 
 

@@ -92,6 +92,19 @@ GrowthLaw::Step GrowthLaw::closed(double m, double dt, double minMass) const
     double end = 0.0;
     if (q == 1.0) {
         end = m * std::exp(c * dt);
+    } else if (q == 2.0 / 3.0) {
+        // The surface law: m^(1/3) linear in time (cube roots, not powers: faster, exact to
+        // a rounding)
+        const double z = std::cbrt(m) + c * dt / 3.0;
+        if (!(z > std::cbrt(minMass))) return {minMass, true};
+        end = z * z * z;
+    } else if (q == 1.0 / 3.0) {
+        // The diameter law: m^(2/3) linear in time
+        const double r = std::cbrt(m);
+        const double z = r * r + 2.0 * c * dt / 3.0;
+        const double rMin = std::cbrt(minMass);
+        if (!(z > rMin * rMin)) return {minMass, true};
+        end = z * std::sqrt(z);
     } else {
         // m^p linear in time, p = 1 - q > 0; gone where it reaches minMass^p (or 0)
         const double p = 1.0 - q;
