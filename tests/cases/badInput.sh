@@ -229,5 +229,8 @@ expectFatalEdit duplicateKernel "duplicate entry: kernel" constant/coagulationPr
 expectFatalEdit dimensionsU     "dimensions"              0/U "s/^dimensions .*/dimensions [0 1 0 0 0 0 0];/"
 # The split steps are of the fixed deltaT: a Courant-limited step is refused, not ignored
 expectFatalEdit adjustTimeStep  "adjustTimeStep"          system/controlDict "adjustTimeStep yes; maxCo 0.5;"
+# The log's progress entries
+expectFatalEdit logStepsValue   "logSteps"                system/controlDict "logSteps sometimes;"
+expectFatalEdit progressZero    "progressInterval"        system/controlDict "progressInterval 0;"
 
 echo "PASS bad input: $passed cases give a FatalIOError naming the entry"

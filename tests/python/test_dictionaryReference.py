@@ -157,6 +157,8 @@ READ_SITES = {
     (MODELS + "submodels/coagulationKernels/localSaffmanTurner/localSaffmanTurner.C",
      "transport"):
         ("transportProperties", None),
+    (MODELS + "clouds/runProgress/runProgress.C", "controls"):
+        ("controlDict", None),
 }
 
 # Switches registered by name -> the section of their controlDict sub-dictionary
@@ -221,6 +223,7 @@ HEADER_SECTIONS = {
          ("cloudFunctions/<name>/bins", "log")],
     MODELS + "cloudFunctions/cellWork/cellWork.H": [("cloudFunctions/<name>", "cellWork")],
     MODELS + "submodels/growthModels/growthModelList/growthModelList.H": [("growth", None)],
+    MODELS + "clouds/runProgress/runProgress.H": [("controlDict", None)],
     MODELS + "submodels/growthModels/constantGrowth/constantGrowth.H":
         [("growth/<name>", "constant")],
     MODELS + "submodels/growthModels/linearGrowth/linearGrowth.H": [("growth/<name>", "linear")],

@@ -33,6 +33,7 @@ Description
 #include "fvCFD.H"
 #include "coagulationCloud.H"
 #include "caseChecks.H"
+#include "runProgress.H"
 
 #include <csignal>
 #include <new>
@@ -59,6 +60,9 @@ int main(int argc, char *argv[])
     std::signal(SIGXFSZ, SIG_IGN);
     std::set_new_handler(nullptr);
 
+    // A line every step for short runs, else progress lines (runProgress)
+    coagulation::runProgress progress(runTime);
+
     Info<< "\nStarting time loop\n" << endl;
 
     try
@@ -70,9 +74,7 @@ int main(int argc, char *argv[])
             cloud.completeWrite();
 
             ++runTime;
-
-            Info<< "Time = " << runTime.timeName() << "  particles = "
-                << returnReduce(cloud.size(), sumOp<label>()) << nl;
+            progress.step(returnReduce(cloud.size(), sumOp<label>()));
 
             // The split step over deltaT (Patterson & Wagner 2011,
             // section 2): Strang A(dt/2) S(dt) A(dt/2) or Lie S(dt) A(dt),
@@ -80,7 +82,12 @@ int main(int argc, char *argv[])
             // the cloud functions on the new state (M0..M3, samples)
             cloud.evolve();
 
-            if (runTime.write())
+            const bool written = runTime.write();
+            progress.afterStep
+            (
+                returnReduce(cloud.size(), sumOp<label>()), written
+            );
+            if (written)
             {
                 // The cloud functions' output (the balances checked), then
                 // the split step's wall times
@@ -91,6 +98,7 @@ int main(int argc, char *argv[])
 
         // Samples to disk, the last write marked complete, balances checked
         cloud.endRun();
+        progress.end();
     }
     catch (const std::bad_alloc&)
     {

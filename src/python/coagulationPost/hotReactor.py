@@ -264,12 +264,15 @@ def plots(argv):
         fig, ax = plt.subplots(figsize=(7.5, 5))
         for c, i in enumerate(sorted({0, nreg // 2, nreg - 1})):
             col = "C%d" % c
-            for m, e, style, what in ((mean[i], ci[i], "--", "without growth"),
-                                      (gmean[i], gci[i], "-", "with growth")):
+            # the growing particles' masses are not integers: every bin may hold some; the
+            # empty bins (zero on the log axis) are left out of the lines
+            for m, e, style, what, sel in ((mean[i], ci[i], "--", "without growth", holds),
+                                           (gmean[i], gci[i], "-", "with growth", nb * [True])):
                 y, dy = m / dlog, e / dlog
-                ax.plot(centre_nm[holds], y[holds], style, color=col,
+                y = np.where(y > 0, y, np.nan)
+                ax.plot(centre_nm[sel], y[sel], style, color=col,
                         label="x = %.2f m, %s" % (xs[i], what))
-                ax.fill_between(centre_nm[holds], np.maximum(y - dy, 0)[holds], (y + dy)[holds],
+                ax.fill_between(centre_nm[sel], np.maximum(y - dy, 0)[sel], (y + dy)[sel],
                                 color=col, alpha=0.15, lw=0)
         top = max(np.max(mean / dlog), np.max(gmean / dlog))
         ax.set_xscale("log")
