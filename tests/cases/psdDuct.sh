@@ -5,7 +5,7 @@
 # equation with inception (averaged over the probe's cell, the zone's x range) bin by bin
 # within the 95 % intervals for correlated samples, its sum (bins, under- and overflow) is
 # M0 of the same cells from the moment samples, and the solver's CSV averages are those of
-# the samples.
+# the samples. The report's plot in diameter (dN/dlog10 d against d) carries the same numbers.
 #   psdDuct.sh n endTime
 . "$(dirname "$0")/caseLib.sh"
 n="${1:-256}"; endTime="${2:-2.0}"
@@ -52,4 +52,25 @@ done
 $report --case . --out results --psd psd --check-psd-bins 1:30 --check-psd-m0 \
     || fail "the time-averaged PSD is off the exact n_k or its sum off M0"
 [ -s results/psd/sizeDistribution.png ] || fail "no PSD plot"
+# the plot in diameter (the case's particles: 1000 kg/m3, massUnit 1e-24 kg): every probe's
+# dN/dlog10 d at the diameter of each size k, with the exact n_k over the bin's width in
+# log10 d, (k - 1/2 to k + 1/2)
+[ -s results/psd/sizeDistributionDiameter.png ] || fail "no PSD plot in diameter"
+"$COAGULATIONFOAM_PYTHON" - <<'PY' || fail "the PSD in diameter is not the exact one's"
+import csv, math, sys
+exact = {}
+for r in csv.DictReader(open("results/sizeDistribution_psd.csv")):
+    if r["column"].startswith("n"):
+        exact[(r["name"], int(r["column"][1:]))] = (float(r["exact"]), float(r["mean"]))
+worst = 0.0
+for r in csv.DictReader(open("results/psd/sizeDistributionDiameter.csv")):
+    k = int(r["bin"]) + 1
+    d = 1e9 * (6 * k * 1e-24 / (math.pi * 1000)) ** (1 / 3)
+    dlog = math.log10((k + 0.5) / (k - 0.5)) / 3
+    ex, mean = exact[(r["region"], k - 1)]
+    worst = max(worst, abs(float(r["d_nm"]) / d - 1), abs(float(r["exact"]) * dlog / ex - 1),
+                abs(float(r["dNdlog10d"]) * dlog / mean - 1) if mean > 0 else 0)
+print("PSD in diameter: d, dN/dlog10 d and the exact curve match the mass bins to %.1e" % worst)
+sys.exit(0 if worst < 1e-8 else 1)
+PY
 echo "PASS PSD on the constant duct n=$n endTime=$endTime"

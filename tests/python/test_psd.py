@@ -138,3 +138,51 @@ def test_figures_two_runs_side_by_side(tmp_path):
     runs = [psd.read(str(a), "psd"), psd.read(str(b), "psd")]
     paths = psd.figures(runs, str(tmp_path / "out"), labels=["a", "b"])
     assert os.path.getsize(paths[0]) > 1000
+
+
+def test_size_statistics_of_a_lognormal():
+    # a lognormal of dg 30 nm, sigma_g 1.5 in 200 log bins from 1 nm to 1 um: the count
+    # median and geometric mean diameters are dg, the geometric standard deviation 1.5
+    edges = np.geomspace(1e-9, 1e-6, 201)
+    lo, hi = edges[:-1], edges[1:]
+    centre = np.sqrt(lo * hi)
+    from scipy.stats import norm
+    ln_sg = np.log(1.5)
+    n = 1e12 * (norm.cdf(np.log(hi / 30e-9) / ln_sg) - norm.cdf(np.log(lo / 30e-9) / ln_sg))
+    cmd, gmd, sg = psd.size_statistics(centre, n, lo, hi)
+    assert abs(cmd / 30e-9 - 1) < 1e-3
+    assert abs(gmd / 30e-9 - 1) < 1e-3
+    assert abs(sg / 1.5 - 1) < 2e-3
+    # shifted by a factor: every diameter statistic by the factor, sigma_g unchanged
+    cmd2, gmd2, sg2 = psd.size_statistics(2 * centre, n, 2 * lo, 2 * hi)
+    assert np.isclose(cmd2, 2 * cmd) and np.isclose(gmd2, 2 * gmd) and np.isclose(sg2, sg)
+
+
+def test_diameter_bins_of_integer_and_log_bins(tmp_path):
+    _synthetic_case(str(tmp_path))
+    p = psd.read(str(tmp_path), "psd")
+    rho, unit = 1800.0, 9.42e-22           # a mass of 1 is a 10 nm sphere
+    d, lo, hi, dlog = psd.diameter_bins(p, rho, unit)
+    k = np.arange(1, 11)
+    assert np.allclose(d, 1e-8 * k ** (1 / 3), rtol=1e-3)
+    assert np.allclose(dlog, np.log10((k + 0.5) / (k - 0.5)) / 3)
+    assert np.all((lo < d) & (d < hi))
+    q = dict(p, binType="log", edges=np.geomspace(1, 1000, 11))
+    d, lo, hi, dlog = psd.diameter_bins(q, rho, unit)
+    assert np.allclose(dlog, 0.1)            # a mass ratio of 10^0.3 a bin: 0.1 in log10 d
+    assert np.allclose(d, np.sqrt(lo * hi))
+
+
+def test_diameter_figure_with_the_exact_distribution(tmp_path):
+    ref = _synthetic_case(str(tmp_path))
+    p = psd.read(str(tmp_path), "psd")
+    paths = psd.diameter_figure([p], str(tmp_path / "out"), density=1800.0, mass_unit=9.42e-22)
+    assert os.path.getsize(paths[0]) > 1000
+    rows = np.genfromtxt(paths[1], delimiter=",", names=True, dtype=None, encoding=None)
+    d, lo, hi, dlog = psd.diameter_bins(p, 1800.0, 9.42e-22)
+    for r in range(2):
+        sel = rows["region"] == "probe%d" % r
+        assert np.allclose(rows["exact"][sel] * dlog, ref[r], rtol=1e-9)
+        assert np.allclose(rows["d_nm"][sel], 1e9 * d)
+    # without a density (none in the run, none given) no figure
+    assert psd.diameter_figure([p], str(tmp_path / "none")) == []

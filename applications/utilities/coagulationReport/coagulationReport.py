@@ -87,6 +87,12 @@ def parse_args(argv):
                         "no NAME: every one found")
     p.add_argument("--psd-compare", metavar="DIR", default=None,
                    help="a second case whose PSD of the same NAME is plotted beside")
+    p.add_argument("--density", type=float, default=None, metavar="RHO",
+                   help="--psd: the particles' density [kg/m3] for the plot in diameter "
+                        "(sizeDistributionDiameter.png; default: the case's 'particles')")
+    p.add_argument("--mass-unit", type=float, default=None, metavar="KG",
+                   help="--psd: kg per unit of the particles' masses (default: the case's "
+                        "'particles' massUnit, else 1)")
     g = p.add_argument_group("checks (exit 1 on failure)")
     g.add_argument("--check", action="store_true",
                    help="compare every cell mean with the analytic cell average")
@@ -180,6 +186,12 @@ def report_psd(args, out, u, written):
                 labels.append(os.path.basename(os.path.abspath(args.psd_compare)))
             d = os.path.join(out, name)
             written += psd.figures(runs, d, u, args.x_inlet, labels)
+            more = psd.diameter_figure(runs, d, u, args.x_inlet, labels, args.density,
+                                       args.mass_unit)
+            if not more:
+                print("PSD %s: no particle density (give the case 'particles { density ...; }'"
+                      " or --density): no plot in diameter" % name)
+            written += more
         if args.check_psd_bins:
             a, b = (int(v) for v in args.check_psd_bins.split(":"))
             if ref is None:

@@ -16,6 +16,10 @@ Files of a function NAME (constant/coagulationProperties, cloudFunctions):
 average() recomputes the averages from the samples with
 statistics.correlated_interval_masked (the same estimator the solver uses, with a
 least window of the residence time upstream of each probe as the moment report).
+figures() plots each region's number density per bin against the mass;
+diameter_figure() every region of a run on one figure as aerosol users read it,
+dN/dlog10 d against d [nm] with the count median and geometric mean diameters and
+sigma_g (size_statistics) in the legend.
 """
 
 import csv
@@ -318,3 +322,111 @@ def check_csv(psd, case, rel_tol=1e-3):
     return ok, ["solver CSV against the samples: largest difference / tolerance: "
                 + ", ".join("%s %.3g" % kv for kv in worst.items())
                 + (" ok" if ok else " FAIL")]
+
+
+def diameter_bins(psd, density, mass_unit):
+    """The bins as diameters of spheres of the density (masses in mass_unit kg): (centre,
+    lower, upper) in m, and the width of each bin in log10 d.  Integer bins hold one size k
+    each, their edges taken half way, k -/+ 1/2; log bins their mass edges."""
+    B = psd["nBins"]
+    e = np.asarray(psd["edges"], float)
+    if psd["binType"] == "integer":
+        k = np.arange(1, B + 1, dtype=float)
+        centre, lower, upper = k, k - 0.5, k + 0.5
+    else:
+        centre, lower, upper = np.sqrt(e[1:B + 1] * e[:B]), e[:B], e[1:B + 1]
+
+    def d(m):
+        return (6.0 * np.asarray(m, float) * mass_unit / (np.pi * density)) ** (1.0 / 3.0)
+    return d(centre), d(lower), d(upper), np.log10(upper / lower) / 3.0
+
+
+def size_statistics(d, n, lower=None, upper=None):
+    """The count median diameter, the geometric mean diameter and the geometric standard
+    deviation of the numbers n in bins of centre diameters d (edges lower, upper: the
+    median interpolated in log d within its bin; without edges, at the centres)."""
+    n = np.where(np.isfinite(n) & (np.asarray(n) > 0), n, 0.0)
+    total = n.sum()
+    if not total > 0:
+        return np.nan, np.nan, np.nan
+    ln = np.log(d)
+    gmd = np.exp(np.dot(n, ln) / total)
+    sg = np.exp(np.sqrt(np.dot(n, (ln - np.log(gmd)) ** 2) / total))
+    cum = np.cumsum(n) / total
+    b = int(np.searchsorted(cum, 0.5))
+    if lower is None:
+        return d[b], gmd, sg
+    before = cum[b - 1] if b > 0 else 0.0
+    f = (0.5 - before) / (cum[b] - before)
+    cmd = np.exp(np.log(lower[b]) + f * (np.log(upper[b]) - np.log(lower[b])))
+    return cmd, gmd, sg
+
+
+def diameter_figure(runs, out, u=1.0, x_inlet=0.0, labels=None, density=None, mass_unit=None):
+    """dN/dlog10 d against d [nm] of every region of each run on one figure per run (side by
+    side), 95 % intervals as bands, the exact distribution as lines where there is one, the
+    count median and geometric mean diameters and sigma_g of each region in the legend.
+    The density and mass unit: the arguments, else the run's ('particles'); a run without
+    either is left out.  Writes sizeDistributionDiameter.png and the plotted arrays as
+    sizeDistributionDiameter.csv (run, region, x, bin, d_nm, dNdlog10d, ci95, exact);
+    returns the paths (none when no run has a density)."""
+    from .plots import _pyplot
+    shown = []
+    for j, p in enumerate(runs):
+        rho = density if density else float(p["attrs"].get("density", 0) or 0)
+        unit = mass_unit if mass_unit else float(p["attrs"].get("massUnit", 1) or 1)
+        if rho > 0:
+            shown.append((j, p, rho, unit))
+    if not shown:
+        return []
+    plt = _pyplot()
+    os.makedirs(out, exist_ok=True)
+    fig, axes = plt.subplots(1, len(shown), figsize=(6.5 * len(shown), 4.8), squeeze=False)
+    rows = []
+    for a, (j, p, rho, unit) in enumerate(shown):
+        ax = axes[0, a]
+        mean, _, ci, _ = average(p, u=u, x_inlet=x_inlet)
+        ref = exact(p, u, x_inlet)
+        B = p["nBins"]
+        d, lo, hi, dlog = diameter_bins(p, rho, unit)
+        nm = 1e9 * d
+        colours = _pyplot().cm.viridis(np.linspace(0, 0.85, len(p["regions"])))
+        for i in range(len(p["regions"])):
+            y, dy = mean[i, :B] / dlog, ci[i, :B] / dlog
+            cmd, gmd, sg = size_statistics(d, mean[i, :B], lo, hi)
+            show = y > 0
+            ax.plot(nm[show], y[show], "o-", ms=3, lw=1, color=colours[i],
+                    label="%s x = %.4g m: CMD %.3g nm, GMD %.3g nm, σg %.3f"
+                    % (p["regions"][i], p["centres"][i, 0], 1e9 * cmd, 1e9 * gmd, sg))
+            ax.fill_between(nm[show], np.maximum(y - dy, 0)[show], (y + dy)[show],
+                            color=colours[i], alpha=0.2, lw=0)
+            ex = ref[i] / dlog if ref is not None else np.full(B, np.nan)
+            if ref is not None:
+                r = np.where(ex > 1e-12 * np.nanmax(ex), ex, np.nan)
+                ax.plot(nm, r, "-", color="k", lw=0.8, zorder=3,
+                        label="exact n(d, t = x/u)" if i == 0 else None)
+            for b in range(B):
+                rows.append("%d,%s,%.8g,%d,%.10g,%.10g,%.10g,%.10g"
+                            % (j, p["regions"][i], p["centres"][i, 0], b, nm[b], y[b], dy[b],
+                               ex[b]))
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        # diameters as plain numbers (2, 3, 5, 20 nm), not powers of ten
+        from matplotlib.ticker import FuncFormatter
+        plain = FuncFormatter(lambda v, _: "%g" % v)
+        ax.xaxis.set_major_formatter(plain)
+        ax.xaxis.set_minor_formatter(plain)
+        ax.set_xlabel("d [nm] (spheres of %g kg/m³)" % rho)
+        ax.set_ylabel("dN/dlog₁₀d [m⁻³]")
+        ax.set_title("%s: size distribution, 95 %% intervals shaded"
+                     % (labels[j] if labels else p["case"]), fontsize=9)
+        ax.legend(fontsize=6)
+    fig.tight_layout()
+    path = os.path.join(out, "sizeDistributionDiameter.png")
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    csv_path = os.path.join(out, "sizeDistributionDiameter.csv")
+    with open(csv_path, "w") as f:
+        f.write("run,region,x,bin,d_nm,dNdlog10d,ci95,exact\n")
+        f.write("\n".join(rows) + "\n")
+    return [path, csv_path]

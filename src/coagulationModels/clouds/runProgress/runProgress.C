@@ -64,8 +64,7 @@ Foam::coagulation::runProgress::runProgress(const Time& runTime)
     const scalar span = runTime.endTime().value() - runTime.value();
     const scalar dt = runTime.deltaTValue();
     steps_ =
-        controls.getOrDefault<word>("stopAt", "endTime") == "endTime"
-     && span < 0.25*labelMax*dt
+        runTime.stopAt() == Time::saEndTime && span < 0.25*labelMax*dt
       ? max(label(std::round(span/dt)), label(0))
       : -1;
 
