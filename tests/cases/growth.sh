@@ -264,6 +264,31 @@ for t in ("0.02", "0.04"):
 sys.exit(0 if ok else 1)
 PY
     grep -q "Growth volume: linear, rate 50" log.coagulationFoam || fail "the growth model is not in the log"
+    # The report of this two-dimensional case: maps, not profiles along x; the maps' values are
+    # the report's cell averages and each panel's colour range their range
+    $report --case . --out results --analytic none --t-relax 0 > log.report 2>&1 || fail "report failed"
+    [ -s results/maps.png ] && [ ! -e results/moments.png ] || fail "the report of a 2-D case drew no maps"
+    "$COAGULATIONFOAM_PYTHON" - <<'PY' || fail "the maps' values are not the report's"
+import sys
+import numpy as np
+maps = np.genfromtxt("results/maps.csv", delimiter=",", names=True, skip_header=2)
+drawn = open("results/maps.csv").readlines()[1]
+print(drawn.strip())
+full = np.genfromtxt("results/moments_full.csv", delimiter=",", names=True)
+head = open("results/maps.csv").readline().split(":", 1)[1]
+ranges = {q: (float(a), float(b)) for q, a, b in (p.split() for p in head.split(","))}
+ok = "the mesh's polygons" in drawn
+for q, col in (("M0", "M0_mean"), ("M1", "M1_mean")):
+    # the same cells (by centre) with the same values
+    order = np.lexsort((maps["y"], maps["x"]))
+    ref = np.lexsort((full["y"], full["x"]))
+    same = np.allclose(maps[q][order], full[col][ref], rtol=1e-10)
+    rng = np.isclose(ranges[q][0], maps[q].min()) and np.isclose(ranges[q][1], maps[q].max())
+    print("maps %s: %d cells, values as moments_full.csv: %s, colour range %.6g..%.6g: %s"
+          % (q, len(maps), same, ranges[q][0], ranges[q][1], rng))
+    ok &= same and rng
+sys.exit(0 if ok else 1)
+PY
     echo "PASS growth moments $alg: M0, M1, M2 of the constant kernel with dm/dt = sigma m on the closed moment equations"
     ;;
 duct)

@@ -47,7 +47,7 @@ import os
 import sys
 
 # the post-processing package, <repo>/src/python/coagulationPost (PYTHONPATH: etc/bashrc)
-from coagulationPost import analytic, checks, plots, psd, report
+from coagulationPost import analytic, checks, maps, plots, psd, report
 from coagulationPost.samples import InputError
 
 EXIT_OK, EXIT_CHECK_FAILED, EXIT_INPUT = 0, 1, 2
@@ -226,9 +226,19 @@ def main(argv=None):
         report.print_table(res, args.t_end)
         written = report.write_csv(res, out)
         written.append(report.write_summary(res, out, args.t_end))
-        if not args.no_plots:
+        dims = maps.dimension(res["centres"])
+        if args.no_plots:
+            pass
+        elif dims <= 1:
+            # along the duct (or a single cell): the moments against x
             written += plots.report_figures(res, out, args.x_inlet, args.t_end,
                                             args.check_rel_tol if args.check else None)
+        elif dims == 2:
+            written += maps.map_figure(res, out, os.path.basename(os.path.abspath(args.case)),
+                                       args.case)
+        else:
+            print("a three-dimensional mesh: no plots of the moments (moments_full.csv has "
+                  "every cell's; coagulationProfiles.py samples lines)")
         ok = True
         if args.check:
             ok = checks.check_analytic(res, args.check_rel_tol, args.check_skip_cells,

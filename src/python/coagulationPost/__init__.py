@@ -33,6 +33,7 @@ imports none of them; ``coagulationPost.X`` imports module X on first use:
   psd         the particle size distribution of a run: its samples, time averages,
               exact distributions, checks and plots (coagulationReport --psd)
   plots       the PNG figures of coagulationReport and coagulationTables (matplotlib, Agg)
+  maps        maps of the report's cell moments on a two-dimensional mesh (maps.png, maps.csv)
   checks      the acceptance checks of coagulationReport and coagulationTables
   cloud       the coagulationCloud's ASCII particle files of a time folder (cells, fields)
   lagrangianStudy
@@ -79,6 +80,7 @@ __all__ = [
     "splittingStudy",
     "hotReactor",
     "squareCylinder",
+    "maps",
 ]
 
 

@@ -1,0 +1,282 @@
+# SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
+"""Maps of the report's time-averaged cell moments on a two-dimensional mesh (one cell
+thick, or any mesh whose cell centres lie in a plane).
+
+dimension(centres)        how many axes the cell centres spread along: 1, 2 or 3
+plane(centres)            the two axes of a two-dimensional mesh's plane
+triangulation(u, v)       the Delaunay triangles of the centres, without those that bridge a
+                          gap of the domain (a step, an obstacle): triangles with an edge
+                          longer than 2.5 times the longer of its vertices' nearest-neighbour
+                          distances are masked
+cell_polygons(case, c)    each cell's polygon on the mesh's plane, from constant/polyMesh
+                          (ASCII or binary): its face on the 'empty' patch of the smaller
+                          coordinate
+map_figure(res, out)      maps.png: the means of M0, M1 and the mean mass M1/M0 (top row) and
+                          their relative standard errors (ci95/1.96 over the mean; bottom row),
+                          each cell's polygon in its colour (or, without the mesh, the values
+                          at the centres, linear in the triangles between them), the domain's
+                          outline; maps.csv beside it holds every cell's plotted values and
+                          each panel's colour range
+"""
+
+import os
+import re
+
+import numpy as np
+
+QUANTITIES = ("M0", "M1", "meanMass", "M0_relSE", "M1_relSE", "meanMass_relSE")
+
+
+def dimension(centres, rel_tol=1e-9):
+    """The number of axes along which the cell centres spread beyond rel_tol of the
+    mesh's extent."""
+    c = np.asarray(centres, float).reshape(-1, 3)
+    if len(c) < 2:
+        return 0
+    span = np.ptp(c, axis=0)
+    return int(np.sum(span > rel_tol * span.max()))
+
+
+def plane(centres, rel_tol=1e-9):
+    """The two axes (indices) a two-dimensional mesh's centres spread along."""
+    c = np.asarray(centres, float).reshape(-1, 3)
+    span = np.ptp(c, axis=0)
+    axes = [a for a in range(3) if span[a] > rel_tol * span.max()]
+    if len(axes) != 2:
+        raise ValueError("the cell centres spread along %d axes, not 2" % len(axes))
+    return axes
+
+
+def triangulation(u, v):
+    """matplotlib's Delaunay triangulation of the points (u, v) with the triangles masked
+    that bridge a gap of the domain (an edge longer than 2.5 times the longer of its two
+    vertices' nearest-neighbour distances)."""
+    import matplotlib.tri as mtri
+    from scipy.spatial import cKDTree
+
+    tri = mtri.Triangulation(u, v)
+    pts = np.column_stack([u, v])
+    dist, _ = cKDTree(pts).query(pts, k=2)
+    near = dist[:, 1]
+    t = tri.triangles
+    mask = np.zeros(len(t), dtype=bool)
+    for a, b in ((0, 1), (1, 2), (2, 0)):
+        edge = np.hypot(u[t[:, a]] - u[t[:, b]], v[t[:, a]] - v[t[:, b]])
+        mask |= edge > 2.5 * np.maximum(near[t[:, a]], near[t[:, b]])
+    tri.set_mask(mask)
+    return tri
+
+
+def outline(tri):
+    """The edges of the unmasked triangles that belong to one of them only: the outline
+    of the domain (and of its holes), as [(u0, v0), (u1, v1)] segments."""
+    t = tri.triangles[~tri.mask] if tri.mask is not None else tri.triangles
+    edges = np.sort(np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]]), axis=1)
+    uniq, count = np.unique(edges, axis=0, return_counts=True)
+    once = uniq[count == 1]
+    return [((tri.x[a], tri.y[a]), (tri.x[b], tri.y[b])) for a, b in once]
+
+
+def _read_list(path):
+    """The list(s) of an OpenFOAM polyMesh file, ASCII or binary: points as an [N][3]
+    array, labels as an [N] array, faces as a list of index arrays (faceList in ASCII,
+    faceCompactList's offsets and indices in binary)."""
+    with open(path, "rb") as f:
+        data = f.read()
+    head_end = data.index(b"}", data.index(b"FoamFile")) + 1
+    header = data[:head_end].decode("latin-1")
+    binary = re.search(r"format\s+binary", header) is not None
+    m = re.search(r"label\s*=\s*(\d+)", header)
+    label = np.int64 if m and m.group(1) == "64" else np.int32
+    m = re.search(r"scalar\s*=\s*(\d+)", header)
+    scalar = np.float32 if m and m.group(1) == "32" else np.float64
+    cls = re.search(r"class\s+(\w+)", header).group(1)
+    body = data[head_end:]
+
+    def count_at(pos):
+        """The count of the list whose count starts at or after pos (past comments), and
+        the position just after its '('"""
+        m = re.compile(rb"(?:^|\n)\s*(\d+)\s*\(", re.S).search(body, pos)
+        return int(m.group(1)), m.end()
+
+    n, pos = count_at(0)
+    if binary:
+        if cls == "vectorField":
+            return np.frombuffer(body, scalar, 3 * n, pos).reshape(n, 3)
+        if cls == "labelList":
+            return np.frombuffer(body, label, n, pos)
+        if cls == "faceCompactList":
+            offsets = np.frombuffer(body, label, n, pos)
+            m2, pos2 = count_at(pos + n * np.dtype(label).itemsize + 1)
+            idx = np.frombuffer(body, label, m2, pos2)
+            return [idx[offsets[i]:offsets[i + 1]] for i in range(n - 1)]
+        raise ValueError("%s: binary %s is not read here" % (path, cls))
+    text = body[pos:].decode("latin-1")
+    if cls == "vectorField":
+        return np.array(text.replace("(", " ").replace(")", " ").split()[:3 * n],
+                        dtype=float).reshape(n, 3)
+    if cls == "labelList":
+        return np.array(text.replace(")", " ").split()[:n], dtype=int)
+    if cls in ("faceList", "faceCompactList"):
+        faces = re.findall(r"\d+\s*\(([^)]*)\)", text)[:n]
+        return [np.array(f.split(), dtype=int) for f in faces]
+    raise ValueError("%s: %s is not read here" % (path, cls))
+
+
+def cell_polygons(case, centres):
+    """Each cell's polygon in the plane of a two-dimensional mesh (one cell thick between
+    two 'empty' patches): the cell's face on the patch side of the smaller coordinate,
+    from constant/polyMesh (ASCII or binary), its points' two in-plane coordinates; the
+    cells matched to centres (the report's order: a decomposed run's differs from the
+    mesh's) by their faces' centroids. None where the mesh cannot be read so or does not
+    match the centres."""
+    from scipy.spatial import cKDTree
+
+    mesh = os.path.join(case, "constant", "polyMesh")
+    try:
+        points = _read_list(os.path.join(mesh, "points"))
+        faces = _read_list(os.path.join(mesh, "faces"))
+        owner = _read_list(os.path.join(mesh, "owner"))
+        with open(os.path.join(mesh, "boundary")) as f:
+            text = f.read()
+    except (OSError, ValueError, AttributeError, IndexError):
+        return None
+    body = text[text.index("}", text.index("FoamFile")) + 1:]
+    patches = re.findall(r"(\w+)\s*\{([^}]*)\}", body)
+    # the normal of the plane: an axis the centres do not spread along (of two such, the
+    # mesh's thinner)
+    c = np.asarray(centres, float)
+    spread = np.ptp(c, axis=0)
+    flat = [k for k in range(3) if spread[k] <= 1e-9 * max(spread.max(), 1e-300)]
+    if not flat:
+        return None
+    normal = min(flat, key=lambda k: np.ptp(points[:, k]))
+    a, b = [k for k in range(3) if k != normal]
+    front = points[:, normal].min()
+    tol = 1e-9 * max(np.ptp(points, axis=0).max(), 1e-300)
+    poly = {}
+    for _, entries in patches:
+        if not re.search(r"\btype\s+empty\s*;", entries):
+            continue
+        n = int(re.search(r"nFaces\s+(\d+)", entries).group(1))
+        start = int(re.search(r"startFace\s+(\d+)", entries).group(1))
+        for fi in range(start, start + n):
+            pts = points[faces[fi]]
+            if np.all(np.abs(pts[:, normal] - front) <= tol):
+                poly[int(owner[fi])] = pts[:, [a, b]]
+    if len(poly) != len(c):
+        return None
+    cells = sorted(poly)
+    centroids = np.array([poly[k].mean(axis=0) for k in cells])
+    _, nearest = cKDTree(centroids).query(c[:, [a, b]])
+    if len(np.unique(nearest)) != len(c):
+        return None
+    return [poly[cells[j]] for j in nearest]
+
+
+def values(res):
+    """Every cell's plotted values: {quantity: array} of QUANTITIES. The mean mass where
+    M0 > 0; its relative error to first order as if M0 and M1 were independent,
+    relSE(M1/M0)^2 = relSE(M1)^2 + relSE(M0)^2 (an upper bound: they are positively
+    correlated)."""
+    mean, ci = res["mean"], res["ci"]
+    se = ci / 1.96
+    with np.errstate(invalid="ignore", divide="ignore"):
+        out = {
+            "M0": mean[:, 0],
+            "M1": mean[:, 1],
+            "meanMass": np.where(mean[:, 0] > 0, mean[:, 1] / mean[:, 0], np.nan),
+            "M0_relSE": se[:, 0] / mean[:, 0],
+            "M1_relSE": se[:, 1] / mean[:, 1],
+        }
+    out["meanMass_relSE"] = np.hypot(out["M0_relSE"], out["M1_relSE"])
+    return out
+
+
+def polygon_outline(polygons):
+    """The edges that belong to one polygon only: the outline of the domain (its patches)."""
+    edges = {}
+    for p in polygons:
+        for i in range(len(p)):
+            e = tuple(sorted((tuple(np.round(p[i], 12)), tuple(np.round(p[i - 1], 12)))))
+            edges[e] = edges.get(e, 0) + 1
+    return [e for e, n in edges.items() if n == 1]
+
+
+def map_figure(res, out, title="", case=None):
+    """maps.png and maps.csv of a two-dimensional report (see the module's text): each
+    cell's polygon in its colour where the case's mesh gives them (cell_polygons), else the
+    values at the centres, linear in the triangles between them; returns their paths."""
+    from matplotlib.collections import LineCollection, PolyCollection
+    from matplotlib.ticker import MaxNLocator
+    from .plots import _pyplot
+
+    centres = np.asarray(res["centres"], float)
+    a, b = plane(centres)
+    u, v = centres[:, a], centres[:, b]
+    polygons = cell_polygons(case, centres) if case else None
+    tri = None if polygons is not None else triangulation(u, v)
+    vals = values(res)
+    names = "xyz"
+    plt = _pyplot()
+    span = np.ptp(u) / max(np.ptp(v), 1e-300)
+    if span > 3:
+        # a long domain (a channel, a step): a quantity and its error side by side, in rows
+        order = ("M0", "M0_relSE", "M1", "M1_relSE", "meanMass", "meanMass_relSE")
+        fig, axes = plt.subplots(3, 2, figsize=(15, 3 * max(1.6, 7.0 / span) + 1.5),
+                                 squeeze=False)
+    else:
+        order = QUANTITIES
+        fig, axes = plt.subplots(2, 3, figsize=(15, 2 * max(2.2, min(5.0, 4.6 / span)) + 1.2),
+                                 squeeze=False)
+    ranges = {}
+    labels = {"M0": "M0 [1/m³]", "M1": "M1 [mass unit/m³]", "meanMass": "M1/M0 [mass unit]",
+              "M0_relSE": "relative standard error of M0", "M1_relSE": "relative standard error of M1",
+              "meanMass_relSE": "relative standard error of M1/M0"}
+    segments = outline(tri) if tri is not None else polygon_outline(polygons)
+    for q, ax in zip(order, axes.ravel()):
+        z = vals[q]
+        finite = np.isfinite(z)
+        lo, hi = (float(np.min(z[finite])), float(np.max(z[finite]))) if finite.any() \
+            else (0.0, 1.0)
+        ranges[q] = (lo, hi)
+        zz = np.where(finite, z, lo)
+        # a field that is the same in every cell (to round-off) gets a colour bar around it
+        pad = 0.0 if hi - lo > 1e-9 * max(abs(hi), abs(lo)) else max(1e-6 * abs(hi), 1e-300)
+        if tri is not None:
+            pc = ax.tripcolor(tri, zz, shading="gouraud", vmin=lo - pad, vmax=hi + pad,
+                              cmap="viridis")
+        else:
+            # edges in the cells' colours: no seams between them
+            pc = PolyCollection(polygons, array=zz, cmap="viridis", edgecolors="face",
+                                linewidths=0.3)
+            pc.set_clim(lo - pad, hi + pad)
+            ax.add_collection(pc)
+            ax.autoscale_view()
+        ax.add_collection(LineCollection(segments, colors="k", linewidths=0.8))
+        fig.colorbar(pc, ax=ax, shrink=0.85)
+        ax.set_aspect("equal")
+        ax.xaxis.set_major_locator(MaxNLocator(4))
+        ax.yaxis.set_major_locator(MaxNLocator(4))
+        ax.set_title(labels[q], fontsize=9)
+        ax.set_xlabel("%s [m]" % names[a])
+        ax.set_ylabel("%s [m]" % names[b])
+    fig.suptitle("Time-averaged moments per cell%s" % (": " + title if title else ""),
+                 fontsize=10)
+    fig.tight_layout()
+    os.makedirs(out, exist_ok=True)
+    png = os.path.join(out, "maps.png")
+    fig.savefig(png, dpi=110)
+    plt.close(fig)
+
+    path = os.path.join(out, "maps.csv")
+    with open(path, "w") as f:
+        f.write("# colour ranges: %s\n" % ", ".join("%s %.12g %.12g" % (q, *ranges[q])
+                                                  for q in QUANTITIES))
+        f.write("# cells drawn as %s\n" % ("the mesh's polygons" if tri is None
+                                           else "triangles between the centres"))
+        f.write("cell,x,y,z," + ",".join(QUANTITIES) + "\n")
+        for i, c in enumerate(centres):
+            f.write("%d,%.12g,%.12g,%.12g," % (i, *c)
+                    + ",".join("%.12g" % vals[q][i] for q in QUANTITIES) + "\n")
+    return [png, path]
