@@ -63,6 +63,7 @@ writePrecision  17;
 timeFormat      general;
 timePrecision   8;
 runTimeModifiable false;
+logSteps        on;         // the particles of every step, averaged below
 libs            (turbulenceModels incompressibleTurbulenceModels);
 DICT
 

@@ -164,6 +164,32 @@ TEST(GrowthLaw, TransitionRegimeCondensation)
     EXPECT_TRUE(evaporation.advance(0.05, 1.01 * tGone, 0.0).gone);
 }
 
+TEST(GrowthLaw, AParticleStartingBelowTheMinimumIsGoneAtItsMass)
+{
+    // An inflow particle smaller than the minimum: gone at once, whatever the law
+    GrowthLaw closed;
+    closed.addPower(1.0, 2.0 / 3.0);
+    GrowthLaw adaptive;
+    adaptive.addTransition(0.6, 1.3, 0.4, 0.7);
+    GrowthLaw none;
+    for (const GrowthLaw* law : {&closed, &adaptive, &none}) {
+        for (double dt : {0.0, 0.01, 1.0}) {
+            const GrowthLaw::Step s = law->advance(0.1, dt, 0.5);
+            EXPECT_TRUE(s.gone);
+            EXPECT_EQ(s.mass, 0.1);
+        }
+    }
+    CellPopulation pop;
+    pop.particles = {Particle{ParticleType{0.1}, 2.0, 0}, Particle{ParticleType{1.0}, 3.0, 1}};
+    StepStatistics stats;
+    growPopulation(pop, none, 1.0, 0.5, stats);
+    ASSERT_EQ(pop.particles.size(), 1u);
+    EXPECT_EQ(pop.particles[0].tag, 1);
+    EXPECT_EQ(stats.lostParticles, 1u);
+    EXPECT_EQ(stats.lostMass, 0.2);
+    EXPECT_EQ(stats.grownMass, 0.0);
+}
+
 TEST(GrowthLaw, RefusesWhatItCannotIntegrate)
 {
     GrowthLaw law;

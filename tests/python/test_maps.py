@@ -124,3 +124,15 @@ def test_cell_polygons_from_the_mesh(tmp_path, binary):
     # centres of another mesh (three cells): no polygons
     other = np.array([[0.5, 0.5, 0.05], [1.5, 0.5, 0.05], [1.0, 0.2, 0.05]])
     assert maps.cell_polygons(str(tmp_path), other) is None
+
+
+def test_an_empty_cell_is_drawn_without_a_value(tmp_path):
+    c = _step_centres()
+    mean = np.column_stack([np.full(len(c), 1e12), np.full(len(c), 2e12), np.ones(len(c)),
+                            np.ones(len(c))])
+    mean[5, :] = 0.0                                 # an empty cell
+    res = {"centres": c, "mean": mean, "ci": 0.02 * mean}
+    png, csv = maps.map_figure(res, str(tmp_path))
+    rows = np.genfromtxt(csv, delimiter=",", names=True, skip_header=2)
+    assert np.isnan(rows["meanMass"][5]) and np.isfinite(rows["meanMass"][4])
+    assert os.path.getsize(png) > 10000

@@ -74,7 +74,7 @@ int main(int argc, char *argv[])
             cloud.completeWrite();
 
             ++runTime;
-            progress.step(returnReduce(cloud.size(), sumOp<label>()));
+            progress.step(cloud.size());
 
             // The split step over deltaT (Patterson & Wagner 2011,
             // section 2): Strang A(dt/2) S(dt) A(dt/2) or Lie S(dt) A(dt),
@@ -83,10 +83,7 @@ int main(int argc, char *argv[])
             cloud.evolve();
 
             const bool written = runTime.write();
-            progress.afterStep
-            (
-                returnReduce(cloud.size(), sumOp<label>()), written
-            );
+            progress.afterStep(cloud.size(), written);
             if (written)
             {
                 // The cloud functions' output (the balances checked), then

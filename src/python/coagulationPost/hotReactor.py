@@ -98,8 +98,7 @@ def foam_psd(case, name):
     samples = psdlib.read(case, name)
     rows, derived = psdlib.read_csv(case, name)
     xs = np.asarray(samples["centres"])[:, 0]  # the probes on the axis
-    bins = sorted({int(r["bin"]) for r in rows if 0 <= int(r["bin"])})
-    nb = len(bins)
+    nb = int(samples["nBins"])  # the rows of bins -1 and nb: under- and overflow
     lower, upper = np.zeros(nb), np.zeros(nb)
     mean, ci = np.zeros((len(xs), nb)), np.zeros((len(xs), nb))
     for r in rows:

@@ -208,6 +208,7 @@ def map_figure(res, out, title="", case=None):
     cell's polygon in its colour where the case's mesh gives them (cell_polygons), else the
     values at the centres, linear in the triangles between them; returns their paths."""
     from matplotlib.collections import LineCollection, PolyCollection
+    from matplotlib.tri import Triangulation
     from matplotlib.ticker import MaxNLocator
     from .plots import _pyplot
 
@@ -240,16 +241,23 @@ def map_figure(res, out, title="", case=None):
         lo, hi = (float(np.min(z[finite])), float(np.max(z[finite]))) if finite.any() \
             else (0.0, 1.0)
         ranges[q] = (lo, hi)
-        zz = np.where(finite, z, lo)
         # a field that is the same in every cell (to round-off) gets a colour bar around it
         pad = 0.0 if hi - lo > 1e-9 * max(abs(hi), abs(lo)) else max(1e-6 * abs(hi), 1e-300)
+        # cells without a value (the mean mass and the errors of an empty cell) in grey
+        cmap = plt.get_cmap("viridis").copy()
+        cmap.set_bad("lightgrey")
         if tri is not None:
-            pc = ax.tripcolor(tri, zz, shading="gouraud", vmin=lo - pad, vmax=hi + pad,
-                              cmap="viridis")
+            # gouraud shading takes no masked values: the triangles at such a cell are left
+            # out, the rest drawn
+            t = Triangulation(tri.x, tri.y, tri.triangles, tri.mask)
+            bad = ~finite[t.triangles].all(axis=1)
+            t.set_mask(bad if t.mask is None else (t.mask | bad))
+            pc = ax.tripcolor(t, np.where(finite, z, lo), shading="gouraud", vmin=lo - pad,
+                              vmax=hi + pad, cmap=cmap)
         else:
             # edges in the cells' colours: no seams between them
-            pc = PolyCollection(polygons, array=zz, cmap="viridis", edgecolors="face",
-                                linewidths=0.3)
+            pc = PolyCollection(polygons, array=np.ma.masked_invalid(z), cmap=cmap,
+                                edgecolors="face", linewidths=0.3)
             pc.set_clim(lo - pad, hi + pad)
             ax.add_collection(pc)
             ax.autoscale_view()

@@ -411,11 +411,11 @@ def diameter_figure(runs, out, u=1.0, x_inlet=0.0, labels=None, density=None, ma
                                ex[b]))
         ax.set_xscale("log")
         ax.set_yscale("log")
-        # diameters as plain numbers (2, 3, 5, 20 nm), not powers of ten
-        from matplotlib.ticker import FuncFormatter
-        plain = FuncFormatter(lambda v, _: "%g" % v)
-        ax.xaxis.set_major_formatter(plain)
-        ax.xaxis.set_minor_formatter(plain)
+        # diameters as plain numbers at 1, 2 and 5 of each decade (not powers of ten)
+        from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
+        ax.xaxis.set_major_locator(LogLocator(base=10, subs=(1.0, 2.0, 5.0)))
+        ax.xaxis.set_major_formatter(FuncFormatter(lambda v, _: "%g" % v))
+        ax.xaxis.set_minor_formatter(NullFormatter())
         ax.set_xlabel("d [nm] (spheres of %g kg/m³)" % rho)
         ax.set_ylabel("dN/dlog₁₀d [m⁻³]")
         ax.set_title("%s: size distribution, 95 %% intervals shaded"

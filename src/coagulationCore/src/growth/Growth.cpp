@@ -8,7 +8,8 @@ namespace coag {
 void growPopulation(CellPopulation& pop, const GrowthLaw& law, double dt, double minMass,
                     StepStatistics& stats)
 {
-    if (law.empty()) return;
+    // Without a law nothing changes but the removal of particles at or below the minimum
+    if (law.empty() && !(minMass > 0.0)) return;
     ParticleVector& P = pop.particles;
     // Compensated: the particles of a cell are often of one size, their terms equal
     CompensatedSum grown, lostNumber, lostMass;

@@ -81,7 +81,10 @@ GrowthLaw::Step GrowthLaw::advance(double m, double dt, double minMass) const
            << m << ", " << dt << ", " << minMass;
         throw std::invalid_argument(os.str());
     }
-    if (empty() || dt == 0.0) return {m, !(m > minMass)};
+    // A particle at or below the threshold already is gone at its own mass (an inflow or an
+    // initial particle smaller than the minimum)
+    if (!(m > minMass)) return {m, true};
+    if (empty() || dt == 0.0) return {m, false};
     return closedForm() ? closed(m, dt, minMass) : adaptive(m, dt, minMass);
 }
 

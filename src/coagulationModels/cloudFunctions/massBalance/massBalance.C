@@ -23,7 +23,10 @@ namespace cloudFunctions
     defineTypeNameAndDebug(massBalance, 0);
 
     //- The rows of sources.csv
-    static const wordList sourceNames({"inflow", "inception", "growth", "loss"});
+    static const wordList sourceNames
+    ({
+        "inflow", "inception", "growth", "loss"
+    });
 }
 }
 }

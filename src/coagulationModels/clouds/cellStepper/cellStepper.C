@@ -89,7 +89,24 @@ void Foam::coagulation::cellStepper::advanceCell
     w.rng.engine().seed(cloud_.seeds()(celli, stream));
     const cellAlgorithm& algorithm =
         incepts ? *w.algorithm : *w.algorithmNoInception;
-    if (growth.active())
+    if (!growth.active())
+    {
+        algorithm.advance
+        (
+            celli, population, inceptionRate, dt, w.rng, w.events
+        );
+    }
+    else if (np == 1 && !incepts)
+    {
+        // A lone particle only grows: no jump process (whose number control
+        // would act on it where a run without growth passes the cell over)
+        growth.law(celli, w.law);
+        coag::growPopulation
+        (
+            population, w.law, dt, growth.minimumMass(), w.events
+        );
+    }
+    else
     {
         growth.law(celli, w.law);
         algorithm.advance
@@ -97,10 +114,6 @@ void Foam::coagulation::cellStepper::advanceCell
             celli, population, inceptionRate, w.law, growth.minimumMass(),
             dt, w.rng, w.events
         );
-    }
-    else
-    {
-        algorithm.advance(celli, population, inceptionRate, dt, w.rng, w.events);
     }
     outcome.events = w.events;
 
@@ -215,8 +228,10 @@ void Foam::coagulation::cellStepper::advance
     if (!failure.empty())
     {
         FatalErrorInFunction
-            << "Cell step failed in " << failure << nl
-            << "    Check the kernel (K0), the inception rate and deltaT in "
+            << "Cell step failed at time "
+            << cloud_.pMesh().time().timeName() << " in " << failure << nl
+            << "    Check the kernel (K0), the inception rate, the growth"
+            << " models and deltaT in "
             << cloud_.properties().objectPath() << " and "
             << cloud_.pMesh().time().controlDict().name() << nl
             << exit(FatalError);
@@ -238,6 +253,9 @@ void Foam::coagulation::cellStepper::advance
     {
         const cellOutcome& outcome = outcomes_[celli];
         events += outcome.events;
+        grownSum_.add(outcome.events.grownMass);
+        lostNumberSum_.add(outcome.events.lostNumber);
+        lostMassSum_.add(outcome.events.lostMass);
         workSum_ += work(celli);
 
         // Particles removed in the cell: DSA merges (including any
@@ -267,6 +285,11 @@ void Foam::coagulation::cellStepper::advance
             cloud_.deleteParticle(*index.cellParticles()[i]);
         }
     }
+    // The growth's run totals, compensated: a uniform case adds near-equal
+    // terms cells times steps over
+    events.grownMass = grownSum_.value();
+    events.lostNumber = lostNumberSum_.value();
+    events.lostMass = lostMassSum_.value();
     index.invalidateSort();
 }
 

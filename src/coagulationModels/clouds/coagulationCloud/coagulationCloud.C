@@ -171,7 +171,7 @@ Foam::coagulation::coagulationCloud::coagulationCloud
     growth_.reset(new growthModelList(properties_, mesh_));
     if
     (
-        growth_->active() && inception_->core().rate > 0
+        growth_->active()
      && !(inception_->core().type.mass > growth_->minimumMass())
     )
     {

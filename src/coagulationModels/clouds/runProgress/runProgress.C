@@ -79,7 +79,10 @@ Foam::coagulation::runProgress::runProgress(const Time& runTime)
     const stepLines lines = stepLinesNames[logSteps];
     everyStep_ =
         lines == stepLines::on
-     || (lines == stepLines::automatic && 0 <= steps_ && steps_ <= maxLoggedSteps);
+     || (
+            lines == stepLines::automatic
+         && 0 <= steps_ && steps_ <= maxLoggedSteps
+        );
 
     if (controls.found("progressInterval"))
     {
@@ -142,31 +145,35 @@ void Foam::coagulation::runProgress::line(const label particles)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::coagulation::runProgress::step(const label particles) const
+void Foam::coagulation::runProgress::step(const label localParticles) const
 {
     if (everyStep_)
     {
         Info<< "Time = " << runTime_.timeName() << "  particles = "
-            << particles << nl;
+            << returnReduce(localParticles, sumOp<label>()) << nl;
     }
 }
 
 
 void Foam::coagulation::runProgress::afterStep
 (
-    const label particles,
+    const label localParticles,
     const bool written
 )
 {
+    if (everyStep_)
+    {
+        return;
+    }
     // Every processor decides alike: the master's clock
     bool due =
         written
      || std::chrono::duration<double>(clock::now() - lastLine_).count()
      >= interval_;
     Pstream::scatter(due);
-    if (!everyStep_ && due)
+    if (due)
     {
-        line(particles);
+        line(returnReduce(localParticles, sumOp<label>()));
     }
 }
 

@@ -27,7 +27,8 @@
 // Dormand-Prince 5(4) step in y = m^(1/3), relative tolerance 1e-10.
 //
 // A particle whose mass falls to minMass or below within the step (or, for minMass 0, to
-// zero) leaves the population: advance returns its mass at that size. The solution of the
+// zero) leaves the population: advance returns its mass at that size (one at or below
+// minMass at the start: its own mass). The solution of the
 // one-dimensional autonomous equation is monotone in time, so a particle that comes back
 // above the threshold later in the step does not exist.
 
