@@ -38,7 +38,9 @@ void advanceWithGrowth(CellAlgorithm& algorithm, CellPopulation& pop,
                        const GrowthLaw& law, double minMass, double dt, Rng& rng,
                        StepStatistics& stats)
 {
-    if (law.empty()) {
+    // No law and no minimum: the jump process alone (a law may be empty in some cells only,
+    // where the minimum still removes what is at or below it)
+    if (law.empty() && !(minMass > 0.0)) {
         algorithm.advance(pop, kernel, inceptionRate, dt, rng, stats);
         return;
     }

@@ -34,7 +34,7 @@ void growPopulation(CellPopulation& pop, const GrowthLaw& law, double dt, double
 
 //- The source step S(dt) = G(dt/2) J(dt) G(dt/2) of a cell: growth by law around the
 //  algorithm's advance over dt with the kernel and the inception rate given; an empty law
-//  is the advance alone
+//  with no minimum is the advance alone
 void advanceWithGrowth(CellAlgorithm& algorithm, CellPopulation& pop,
                        const CoagulationKernel& kernel, double inceptionRate,
                        const GrowthLaw& law, double minMass, double dt, Rng& rng,
