@@ -176,6 +176,13 @@ expectFatal growthUnknownEntry "minimumMas"       -entry growth -set "{ minimumM
 expectFatal growthBothMinimum  "not both"         -entry growth -set "{ minimumMass 0; minimumDiameter 1e-9; g { type constant; rate 1; } }"
 expectFatal growthNegativeMinimum "minimumMass"   -entry growth -set "{ minimumMass -1; g { type constant; rate 1; } }"
 expectFatal growthMinimumAboveInception "not above the minimum mass" -entry growth -set "{ minimumMass 2; g { type constant; rate 1; } }"
+# the same without inception at the start (a rate of 0; a field's may rise later)
+c="$workDir/badInput_growthMinimumNoInception"
+rm -rf "$c"; cp -r "$base" "$c"
+(cd "$c" && foamDictionary constant/coagulationProperties -entry inception/rate -set 0 > /dev/null \
+    && foamDictionary constant/coagulationProperties -entry growth \
+        -set "{ minimumMass 2; g { type constant; rate 1; } }" > /dev/null)
+checkFatal growthMinimumNoInception "not above the minimum mass" "$c" constant/coagulationProperties
 expectFatal growthMissingVapourField "'cVapour'.*0/cVapour" -entry growth -set "{ v { $vapour concentration cVapour; } }"
 expectFatal growthNegativeDiffusivity "'diffusivity'" -entry growth -set "{ v { type condensation; concentration 1e-5; molarMass 0.098; diffusivity -1e-5; T 400; } }"
 expectFatal growthAccommodation "'accommodation'" -entry growth -set "{ v { $vapour accommodation 1.5; } }"

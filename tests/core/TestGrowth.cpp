@@ -190,6 +190,24 @@ TEST(GrowthLaw, AParticleStartingBelowTheMinimumIsGoneAtItsMass)
     EXPECT_EQ(stats.grownMass, 0.0);
 }
 
+TEST(Growth, TheMinimumActsWhereTheLawIsEmpty)
+{
+    // A cell where no model acts (an empty law) with a minimum: the source step removes the
+    // particle below it and books it, the jump process runs on the rest
+    ConstantKernel kernel(1.0);
+    auto alg = makeCellAlgorithm("SWA", kernel, InceptionModel{});
+    CellPopulation pop;
+    pop.volume = 1.0;
+    pop.particles = {Particle{ParticleType{0.1}, 2.0, 0}, Particle{ParticleType{1.0}, 3.0, 1}};
+    Rng rng(3);
+    StepStatistics stats;
+    advanceWithGrowth(*alg, pop, kernel, 0.0, GrowthLaw{}, 0.5, 1e-9, rng, stats);
+    ASSERT_EQ(pop.particles.size(), 1u);
+    EXPECT_EQ(pop.particles[0].tag, 1);
+    EXPECT_EQ(stats.lostParticles, 1u);
+    EXPECT_EQ(stats.lostMass, 0.2);
+}
+
 TEST(GrowthLaw, RefusesWhatItCannotIntegrate)
 {
     GrowthLaw law;

@@ -136,3 +136,21 @@ def test_an_empty_cell_is_drawn_without_a_value(tmp_path):
     rows = np.genfromtxt(csv, delimiter=",", names=True, skip_header=2)
     assert np.isnan(rows["meanMass"][5]) and np.isfinite(rows["meanMass"][4])
     assert os.path.getsize(png) > 10000
+    # without the mesh: the triangles at the empty cell are out of the map and drawn grey
+    tri = maps.triangulation(c[:, 0], c[:, 1])
+    finite = np.isfinite(rows["meanMass"])
+    t, grey = maps.split_invalid(tri, finite)
+    at5 = (t.triangles == 5).any(axis=1)
+    assert t.mask[at5].all() and len(grey) == np.count_nonzero(at5 & ~tri.mask)
+    assert not t.mask[~at5 & ~tri.mask].any()
+    # with the mesh's polygons: the empty cell in the colour map's 'bad' colour
+    import matplotlib
+    cmap = matplotlib.colormaps["viridis"].copy()
+    cmap.set_bad("lightgrey")
+    squares = [np.array([[x - 0.04, y - 0.04], [x + 0.04, y - 0.04], [x + 0.04, y + 0.04],
+                         [x - 0.04, y + 0.04]]) for x, y in c[:, :2]]
+    pc = maps.cell_collection(squares, rows["meanMass"], cmap, 0.5, 1.5)
+    pc.update_scalarmappable()
+    colours = pc.get_facecolors()
+    assert np.allclose(colours[5], matplotlib.colors.to_rgba("lightgrey"))
+    assert not np.allclose(colours[4], matplotlib.colors.to_rgba("lightgrey"))

@@ -193,6 +193,31 @@ def values(res):
     return out
 
 
+def split_invalid(tri, finite):
+    """The triangulation with the triangles at a cell without a value (finite False) masked
+    too, and those triangles as polygons [k][3][2] (drawn grey)."""
+    from matplotlib.tri import Triangulation
+
+    t = Triangulation(tri.x, tri.y, tri.triangles, tri.mask)
+    shown = np.ones(len(t.triangles), dtype=bool) if t.mask is None else ~t.mask
+    bad = ~np.asarray(finite)[t.triangles].all(axis=1) & shown
+    t.set_mask(~shown | bad)
+    tb = t.triangles[bad]
+    return t, np.stack([t.x[tb], t.y[tb]], axis=-1)
+
+
+def cell_collection(polygons, z, cmap, vmin, vmax):
+    """The cells' polygons coloured by z on cmap over [vmin, vmax], the cells without a
+    value (not finite) in the colour map's 'bad' colour; edges in the cells' colours (no
+    seams between them)."""
+    from matplotlib.collections import PolyCollection
+
+    pc = PolyCollection(polygons, array=np.ma.masked_invalid(z), cmap=cmap,
+                        edgecolors="face", linewidths=0.3)
+    pc.set_clim(vmin, vmax)
+    return pc
+
+
 def polygon_outline(polygons):
     """The edges that belong to one polygon only: the outline of the domain (its patches)."""
     edges = {}
@@ -208,7 +233,6 @@ def map_figure(res, out, title="", case=None):
     cell's polygon in its colour where the case's mesh gives them (cell_polygons), else the
     values at the centres, linear in the triangles between them; returns their paths."""
     from matplotlib.collections import LineCollection, PolyCollection
-    from matplotlib.tri import Triangulation
     from matplotlib.ticker import MaxNLocator
     from .plots import _pyplot
 
@@ -247,18 +271,14 @@ def map_figure(res, out, title="", case=None):
         cmap = plt.get_cmap("viridis").copy()
         cmap.set_bad("lightgrey")
         if tri is not None:
-            # gouraud shading takes no masked values: the triangles at such a cell are left
-            # out, the rest drawn
-            t = Triangulation(tri.x, tri.y, tri.triangles, tri.mask)
-            bad = ~finite[t.triangles].all(axis=1)
-            t.set_mask(bad if t.mask is None else (t.mask | bad))
+            # gouraud shading takes no masked values: the triangles at such a cell are
+            # drawn grey beneath, and left out of the map
+            t, grey = split_invalid(tri, finite)
+            ax.add_collection(PolyCollection(grey, facecolors="lightgrey", edgecolors="none"))
             pc = ax.tripcolor(t, np.where(finite, z, lo), shading="gouraud", vmin=lo - pad,
                               vmax=hi + pad, cmap=cmap)
         else:
-            # edges in the cells' colours: no seams between them
-            pc = PolyCollection(polygons, array=np.ma.masked_invalid(z), cmap=cmap,
-                                edgecolors="face", linewidths=0.3)
-            pc.set_clim(lo - pad, hi + pad)
+            pc = cell_collection(polygons, z, cmap, lo - pad, hi + pad)
             ax.add_collection(pc)
             ax.autoscale_view()
         ax.add_collection(LineCollection(segments, colors="k", linewidths=0.8))
