@@ -131,9 +131,7 @@ SECTIONS = {
     (MODELS + "submodels/growthModels/growthModelList/growthModelList.C", "growthModelList", 0):
         [("growth", None)],
     (MODELS + "submodels/growthModels/constantGrowth/constantGrowth.C", "constantGrowth", 0):
-        [("growth/<name>", "constant")],
-    (MODELS + "submodels/growthModels/linearGrowth/linearGrowth.C", "linearGrowth", 0):
-        [("growth/<name>", "linear")],
+        [("growth/<name>", "constant"), ("growth/<name>", "linear")],
     (MODELS + "submodels/growthModels/surfaceGrowth/surfaceGrowth.C", "surfaceGrowth", 0):
         [("growth/<name>", "surface")],
     (MODELS + "submodels/growthModels/condensationGrowth/condensationGrowth.C",

@@ -2,7 +2,7 @@
 """coagulationPost.hotReactor: the plug flow's discrete sizes put into the solver's mass bins."""
 import numpy as np
 
-from coagulationPost import hotReactor
+from coagulationPost import hotReactor, maps
 
 
 def test_bin_sizes_puts_each_mass_in_the_bin_below_its_upper_edge():
@@ -81,8 +81,9 @@ def test_surface_rate_field_is_the_arrhenius_rate_of_each_cell(tmp_path):
     (tmp_path / "constant" / "polyMesh" / "boundary").write_text(BOUNDARY)
     (tmp_path / "0").mkdir()
     (tmp_path / "0" / "T").write_text(T_FIELD)
-    assert hotReactor.patch_types(str(tmp_path)) == [
-        ("inlet", "patch"), ("lowerWall", "wall"), ("frontAndBack", "empty")]
+    assert maps.patches(str(tmp_path)) == [
+        ("inlet", "patch", 15, 4395), ("lowerWall", "wall", 150, 4425),
+        ("frontAndBack", "empty", 4500, 4725)]
     k = hotReactor.surface_rate_field(str(tmp_path), "0", 1.25, 1e5)
     exact = 1.25 * np.exp(-1e5 / (8.314462618 * np.array([400.0, 800.0, 1200.0])))
     assert np.allclose(k, exact, rtol=1e-15)

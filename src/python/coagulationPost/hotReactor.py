@@ -32,6 +32,7 @@ import sys
 
 import numpy as np
 
+from . import maps
 from . import psd as psdlib
 
 
@@ -65,15 +66,6 @@ def internal_field(text):
     return float(m.group(1))
 
 
-def patch_types(case):
-    """(name, type) of each patch of constant/polyMesh/boundary."""
-    with open(os.path.join(case, "constant", "polyMesh", "boundary")) as f:
-        text = f.read()
-    # after the header's dictionary (no braces inside it), each patch's dictionary
-    body = text[text.index("}", text.index("FoamFile")) + 1:]
-    return re.findall(r"(\w+)\s*\{[^}]*?\btype\s+(\w+)\s*;", body)
-
-
 def surface_rate_field(case, time, A, Ea, name="kSurface"):
     """Write <case>/<time>/<name>: k_s = A exp(-Ea/(R T)) [kg/(m2 s)] of each cell from the
     case's T at that time; zeroGradient on every patch but the empty ones. Returns k_s."""
@@ -83,7 +75,7 @@ def surface_rate_field(case, time, A, Ea, name="kSurface"):
     values = ("nonuniform List<scalar> %d\n(\n%s\n)" % (k.size, "\n".join("%.17g" % v for v in k))
               if k.ndim else "uniform %.17g" % k)
     patches = "\n".join("    %s { type %s; }" % (p, "empty" if t == "empty" else "zeroGradient")
-                         for p, t in patch_types(case))
+                         for p, t, _, _ in maps.patches(case))
     with open(os.path.join(case, time, name), "w") as f:
         f.write("FoamFile\n{\n    version 2.0;\n    format ascii;\n    class volScalarField;\n"
                 "    object %s;\n}\n\ndimensions [1 -2 -1 0 0 0 0];\n\ninternalField %s;\n\n"

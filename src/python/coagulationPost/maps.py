@@ -123,6 +123,21 @@ def _read_list(path):
     raise ValueError("%s: %s is not read here" % (path, cls))
 
 
+def patches(case):
+    """(name, type, nFaces, startFace) of each patch of constant/polyMesh/boundary."""
+    with open(os.path.join(case, "constant", "polyMesh", "boundary")) as f:
+        text = f.read()
+    # after the header's dictionary (no braces inside it), each patch's dictionary
+    body = text[text.index("}", text.index("FoamFile")) + 1:]
+    out = []
+    for name, entries in re.findall(r"(\w+)\s*\{([^}]*)\}", body):
+        def get(key):
+            m = re.search(r"\b%s\s+(\w+)\s*;" % key, entries)
+            return m.group(1) if m else None
+        out.append((name, get("type"), int(get("nFaces") or 0), int(get("startFace") or 0)))
+    return out
+
+
 def cell_polygons(case, centres):
     """Each cell's polygon in the plane of a two-dimensional mesh (one cell thick between
     two 'empty' patches): the cell's face on the patch side of the smaller coordinate,
@@ -137,12 +152,9 @@ def cell_polygons(case, centres):
         points = _read_list(os.path.join(mesh, "points"))
         faces = _read_list(os.path.join(mesh, "faces"))
         owner = _read_list(os.path.join(mesh, "owner"))
-        with open(os.path.join(mesh, "boundary")) as f:
-            text = f.read()
+        boundary = patches(case)
     except (OSError, ValueError, AttributeError, IndexError):
         return None
-    body = text[text.index("}", text.index("FoamFile")) + 1:]
-    patches = re.findall(r"(\w+)\s*\{([^}]*)\}", body)
     # the normal of the plane: an axis the centres do not spread along (of two such, the
     # mesh's thinner)
     c = np.asarray(centres, float)
@@ -155,11 +167,9 @@ def cell_polygons(case, centres):
     front = points[:, normal].min()
     tol = 1e-9 * max(np.ptp(points, axis=0).max(), 1e-300)
     poly = {}
-    for _, entries in patches:
-        if not re.search(r"\btype\s+empty\s*;", entries):
+    for _, kind, n, start in boundary:
+        if kind != "empty":
             continue
-        n = int(re.search(r"nFaces\s+(\d+)", entries).group(1))
-        start = int(re.search(r"startFace\s+(\d+)", entries).group(1))
         for fi in range(start, start + n):
             pts = points[faces[fi]]
             if np.all(np.abs(pts[:, normal] - front) <= tol):

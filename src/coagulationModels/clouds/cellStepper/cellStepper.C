@@ -89,6 +89,10 @@ void Foam::coagulation::cellStepper::advanceCell
     w.rng.engine().seed(cloud_.seeds()(celli, stream));
     const cellAlgorithm& algorithm =
         incepts ? *w.algorithm : *w.algorithmNoInception;
+    if (growth.active())
+    {
+        growth.law(celli, w.law);
+    }
     if (!growth.active())
     {
         algorithm.advance
@@ -100,7 +104,6 @@ void Foam::coagulation::cellStepper::advanceCell
     {
         // A lone particle only grows: no jump process (whose number control
         // would act on it where a run without growth passes the cell over)
-        growth.law(celli, w.law);
         coag::growPopulation
         (
             population, w.law, dt, growth.minimumMass(), w.events
@@ -108,7 +111,6 @@ void Foam::coagulation::cellStepper::advanceCell
     }
     else
     {
-        growth.law(celli, w.law);
         algorithm.advance
         (
             celli, population, inceptionRate, w.law, growth.minimumMass(),

@@ -25,14 +25,27 @@ Foam::coagulation::growthModels::constantGrowth::constantGrowth
 (
     const word& name,
     const dictionary& dict,
-    const fvMesh&
+    const scalar exponent,
+    const word& model
 )
 :
     growthModel(name, dict, {"rate"}),
-    rate_(finite(dict, "rate"))
+    rate_(finite(dict, "rate")),
+    exponent_(exponent)
 {
-    Info<< "Growth " << name << ": constant, rate " << rate_ << endl;
+    Info<< "Growth " << name << ": " << model << ", rate " << rate_ << endl;
 }
+
+
+Foam::coagulation::growthModels::constantGrowth::constantGrowth
+(
+    const word& name,
+    const dictionary& dict,
+    const fvMesh&
+)
+:
+    constantGrowth(name, dict, 0, typeName)
+{}
 
 
 // ************************************************************************* //

@@ -28,11 +28,8 @@ Foam::coagulation::growthModels::linearGrowth::linearGrowth
     const fvMesh&
 )
 :
-    growthModel(name, dict, {"rate"}),
-    rate_(finite(dict, "rate"))
-{
-    Info<< "Growth " << name << ": linear, rate " << rate_ << endl;
-}
+    constantGrowth(name, dict, 1, typeName)
+{}
 
 
 // ************************************************************************* //
