@@ -7,7 +7,8 @@
 # keyed by processor), so their time-averaged moments agree within the runs' intervals
 # cell by cell (at most 15 % of the cell-moments outside the 95 % intervals of the
 # difference, none beyond 5 standard errors), and so do the particles deposited on each
-# wall and leaving through the outlet after the flush (Poisson intervals, |z| < 4).
+# wall and leaving through the outlet after the flush (Poisson intervals, |z| < 4). The
+# report's slices and line of the decomposed run hold the cells' own statistics.
 . "$(dirname "$0")/caseLib.sh"
 
 serial="$workDir/channel_serial"
@@ -79,4 +80,42 @@ for p in ("lowerWall", "upperWall", "sideWalls", "outlet"):
     good &= abs(zz) < 4 and n1 > 50
 sys.exit(0 if good else 1)
 PY
-echo "PASS channel: serial and 2-rank runs of the real pipeline agree, balances closed with deposition"
+# The report's pictures of a 3-D mesh, on the decomposed run (its samples merged in another
+# order than the mesh's cells): the default slice (through the middle, across the thinnest
+# extent), a slice across the channel on a layer of faces, and a line along its axis; each
+# CSV holds the cells' own values of moments_full.csv, the slice's colour ranges are its
+# cells' ranges, the line's cells tile it in order
+$report --case . --out pictures --analytic none > log.reportDefault || fail "default pictures"
+[ -f pictures/slice_z0.025.png ] || fail "no default slice"
+$report --case . --out pictures --analytic none --slice x=0.1 \
+    --line "(0 0.025 0.02)" "(0.5 0.025 0.02)" > log.reportPictures || fail "pictures"
+"$COAGULATIONFOAM_PYTHON" - <<'PY' || fail "the slices and the line"
+import numpy as np
+full = np.genfromtxt("pictures/moments_full.csv", delimiter=",", names=True)
+key = {tuple(np.round([r["x"], r["y"], r["z"]], 9)): r for r in full}
+good = True
+for name, count, at in (("slice_z0.025", 500, ("z", 0.0225)), ("slice_x0.1", 100, ("x", 0.095))):
+    rows = np.genfromtxt("pictures/%s.csv" % name, delimiter=",", names=True, skip_header=2)
+    ref = [key[tuple(np.round([r["x"], r["y"], r["z"]], 9))] for r in rows]
+    m0 = np.array([r["M0_mean"] for r in ref])
+    head = open("pictures/%s.csv" % name).readline()
+    lo, hi = [float(v) for v in head.split("M0 ", 1)[1].split(",")[0].split()]
+    ok = (len(rows) == count and np.allclose(rows[at[0]], at[1])
+          and np.allclose(rows["M0"], m0, rtol=1e-9)
+          and np.isclose(lo, m0.min()) and np.isclose(hi, m0.max()))
+    print("%s: %d cells at %s = %g, M0 as moments_full.csv, range %g..%g: %s"
+          % (name, len(rows), at[0], at[1], lo, hi, "ok" if ok else "FAIL"))
+    good &= ok
+rows = np.genfromtxt("pictures/line1.csv", delimiter=",", names=True, skip_header=1)
+ref = [key[tuple(np.round([r["x"], r["y"], r["z"]], 9))] for r in rows]
+ok = (len(rows) == 50 and np.isclose(rows["s_in"][0], 0) and np.isclose(rows["s_out"][-1], 0.5)
+      and np.allclose(rows["s_in"][1:], rows["s_out"][:-1]) and np.all(np.diff(rows["x"]) > 0)
+      and np.allclose(rows["M1"], [r["M1_mean"] for r in ref], rtol=1e-9)
+      and np.allclose(rows["M1_ci95"], [r["M1_ci95"] for r in ref], rtol=1e-9))
+print("line1: %d cells from s = %g to %g, M1 and its interval as moments_full.csv: %s"
+      % (len(rows), rows["s_in"][0], rows["s_out"][-1], "ok" if ok else "FAIL"))
+sys_exit = 0 if (good and ok) else 1
+raise SystemExit(sys_exit)
+PY
+
+echo "PASS channel: serial and 2-rank runs of the real pipeline agree, balances closed with deposition; the report's slices and line"

@@ -80,6 +80,15 @@ def parse_args(argv):
                         "(default: the residence time (x - x_inlet)/u upstream of the cell; "
                         "0: Sokal's automatic window alone)")
     p.add_argument("--no-plots", action="store_true", help="skip the PNG files")
+    p.add_argument("--slice", action="append", metavar="AXIS=VALUE", default=[],
+                   help="maps of the moments on the plane AXIS = VALUE (x, y or z) of the "
+                        "case's mesh: slice_<AXIS><VALUE>.png and .csv; repeatable. A 3-D "
+                        "mesh without --slice or --line: the plane through its middle "
+                        "across its thinnest extent")
+    p.add_argument("--line", nargs=2, action="append", metavar=("P0", "P1"), default=[],
+                   help="the moments along the segment from P0 to P1, each '(x y z)' or "
+                        "x,y,z: line<k>.png and .csv (k = 1, 2, ... in the order given); "
+                        "repeatable")
     p.add_argument("--psd", nargs="*", metavar="NAME", default=None,
                    help="size distribution functions (cloudFunctions) to report: their "
                         "time-averaged PSD at every probe/zone against the exact "
@@ -124,6 +133,11 @@ def parse_args(argv):
                    help="check the PSD's sum against M0 of the probe's cell (moment samples), and "
                         "the solver's CSV averages against the samples")
     args = p.parse_args(argv)
+    try:
+        args.slices = [parse_slice(t) for t in args.slice]
+        args.lines = [(parse_point(a), parse_point(b)) for a, b in args.line]
+    except ValueError as e:
+        p.error(str(e))
     if args.check_skip_cells < 0:
         p.error("--check-skip-cells must be >= 0")
     if args.check_rel_tol <= 0:
@@ -156,6 +170,73 @@ def parse_args(argv):
             if getattr(args, name):
                 p.error("--%s without --check-value" % name.replace("_", "-"))
     return args
+
+
+def parse_slice(text):
+    """'z=0.025' -> (2, 0.025)"""
+    axis, _, value = text.partition("=")
+    if axis.strip() not in ("x", "y", "z") or not value.strip():
+        raise ValueError("--slice %s: give AXIS=VALUE with AXIS x, y or z (z=0.025)" % text)
+    try:
+        return "xyz".index(axis.strip()), float(value)
+    except ValueError:
+        raise ValueError("--slice %s: %s is not a number" % (text, value)) from None
+
+
+def parse_point(text):
+    """'(0 0.1 0)' or '0,0.1,0' -> [0, 0.1, 0]"""
+    parts = text.replace("(", " ").replace(")", " ").replace(",", " ").split()
+    try:
+        point = [float(v) for v in parts]
+    except ValueError:
+        point = []
+    if len(point) != 3:
+        raise ValueError("--line %s: a point is three numbers, '(x y z)' or x,y,z" % text)
+    return point
+
+
+def report_sections(args, res, out, dims):
+    """The slices and lines of a mesh: those asked for, or on a 3-D mesh the plane through
+    its middle across its thinnest extent; their files."""
+    import numpy as np
+    from coagulationPost import sections
+
+    slices, lines = args.slices, args.lines
+    asked = bool(slices or lines)
+    centres = np.asarray(res["centres"], float)
+    if not asked:
+        if dims < 3:
+            return []
+        lo, hi = centres.min(axis=0), centres.max(axis=0)
+        # of extents equal to round-off the last axis (z before y: a square channel along x
+        # is cut in its x-y plane)
+        extent = np.round((hi - lo) / max((hi - lo).max(), 1e-300), 6)
+        axis = int(max(range(3), key=lambda k: (-extent[k], k)))
+        slices = [(axis, 0.5 * (lo[axis] + hi[axis]))]
+    case = args.realisations[0] if args.realisations else args.case
+    try:
+        mesh = sections.read_mesh(case)
+    except ValueError as e:
+        if asked:
+            raise InputError("--slice/--line need the case's mesh: %s" % e) from None
+        print("a three-dimensional mesh without a readable constant/polyMesh (%s): no maps "
+              "(moments_full.csv has every cell's)" % e)
+        return []
+    cell_of_row = sections.match_cells(mesh, centres)
+    if cell_of_row is None:
+        raise InputError("the cells of %s/constant/polyMesh (%d) do not match the samples' "
+                         "%d cell centres" % (case, mesh["nCells"], len(centres)))
+    title = os.path.basename(os.path.abspath(case))
+    written = []
+    try:
+        for axis, value in slices:
+            written += maps.slice_figure(res, out, mesh, cell_of_row, axis, value, title)
+        for k, (p0, p1) in enumerate(lines):
+            written += maps.line_figure(res, out, mesh, cell_of_row, p0, p1,
+                                        "line%d" % (k + 1), title)
+    except ValueError as e:
+        raise InputError(str(e)) from None
+    return written
 
 
 def report_psd(args, out, u, written):
@@ -236,9 +317,8 @@ def main(argv=None):
         elif dims == 2:
             written += maps.map_figure(res, out, os.path.basename(os.path.abspath(args.case)),
                                        args.case)
-        else:
-            print("a three-dimensional mesh: no plots of the moments (moments_full.csv has "
-                  "every cell's; coagulationProfiles.py samples lines)")
+        if not args.no_plots:
+            written += report_sections(args, res, out, dims)
         ok = True
         if args.check:
             ok = checks.check_analytic(res, args.check_rel_tol, args.check_skip_cells,

@@ -33,7 +33,10 @@ imports none of them; ``coagulationPost.X`` imports module X on first use:
   psd         the particle size distribution of a run: its samples, time averages,
               exact distributions, checks and plots (coagulationReport --psd)
   plots       the PNG figures of coagulationReport and coagulationTables (matplotlib, Agg)
-  maps        maps of the report's cell moments on a two-dimensional mesh (maps.png, maps.csv)
+  maps        maps of the report's cell moments on a two-dimensional mesh (maps.png, maps.csv),
+              on planes through a mesh and along lines (coagulationReport --slice, --line)
+  sections    the cells of a mesh an axis-aligned plane cuts (their polygons) and a segment
+              crosses (their entry and exit)
   checks      the acceptance checks of coagulationReport and coagulationTables
   cloud       the coagulationCloud's ASCII particle files of a time folder (cells, fields)
   lagrangianStudy
@@ -81,6 +84,7 @@ __all__ = [
     "hotReactor",
     "squareCylinder",
     "maps",
+    "sections",
 ]
 
 

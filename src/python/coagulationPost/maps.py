@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
-"""Maps of the report's time-averaged cell moments on a two-dimensional mesh (one cell
-thick, or any mesh whose cell centres lie in a plane).
+"""Maps of the report's time-averaged cell moments: on a two-dimensional mesh (one cell
+thick, or any mesh whose cell centres lie in a plane), on a plane through any mesh, and
+along a line.
 
 dimension(centres)        how many axes the cell centres spread along: 1, 2 or 3
 plane(centres)            the two axes of a two-dimensional mesh's plane
@@ -17,6 +18,16 @@ map_figure(res, out)      maps.png: the means of M0, M1 and the mean mass M1/M0 
                           at the centres, linear in the triangles between them), the domain's
                           outline; maps.csv beside it holds every cell's plotted values and
                           each panel's colour range
+slice_figure(res, out, mesh, cell_of_row, axis, value)
+                          the same maps on the cells the plane x[axis] = value cuts, each
+                          drawn as its cut: slice_<axis><value>.png and .csv
+line_figure(res, out, mesh, cell_of_row, p0, p1, name)
+                          M0, M1 and M1/M0 of the cells the segment p0 p1 crosses against
+                          the distance along it, a step per cell with its 95 % interval as
+                          a band: <name>.png and .csv
+
+The values are each cell's own time averages and intervals, not interpolated between
+cells: a picture shows what the report's statistics say, cell by cell.
 """
 
 import os
@@ -238,24 +249,34 @@ def polygon_outline(polygons):
     return [e for e, n in edges.items() if n == 1]
 
 
-def map_figure(res, out, title="", case=None):
-    """maps.png and maps.csv of a two-dimensional report (see the module's text): each
-    cell's polygon in its colour where the case's mesh gives them (cell_polygons), else the
-    values at the centres, linear in the triangles between them; returns their paths."""
+LABELS = {"M0": "M0 [1/m³]", "M1": "M1 [mass unit/m³]", "meanMass": "M1/M0 [mass unit]",
+          "M0_relSE": "relative standard error of M0",
+          "M1_relSE": "relative standard error of M1",
+          "meanMass_relSE": "relative standard error of M1/M0"}
+
+
+def _draw(vals, a, b, polygons, tri, title, png):
+    """The six panels of vals (each cell's polygon in its colour, or with tri the values at
+    the centres, linear in its triangles) on the plane of axes a and b, the domain's
+    outline, saved as png; returns each quantity's colour range."""
     from matplotlib.collections import LineCollection, PolyCollection
     from matplotlib.ticker import MaxNLocator
     from .plots import _pyplot
 
-    centres = np.asarray(res["centres"], float)
-    a, b = plane(centres)
-    u, v = centres[:, a], centres[:, b]
-    polygons = cell_polygons(case, centres) if case else None
-    tri = None if polygons is not None else triangulation(u, v)
-    vals = values(res)
+    if tri is not None:
+        u, v = tri.x, tri.y
+    else:
+        corners = np.concatenate(polygons)
+        u, v = corners[:, 0], corners[:, 1]
     names = "xyz"
     plt = _pyplot()
     span = np.ptp(u) / max(np.ptp(v), 1e-300)
-    if span > 3:
+    if span > 6:
+        # a very long domain (a channel): one panel a row, the quantity above its error
+        order = ("M0", "M0_relSE", "M1", "M1_relSE", "meanMass", "meanMass_relSE")
+        fig, axes = plt.subplots(6, 1, figsize=(14, 6 * (11.0 / span + 0.9) + 0.6),
+                                 squeeze=False)
+    elif span > 3:
         # a long domain (a channel, a step): a quantity and its error side by side, in rows
         order = ("M0", "M0_relSE", "M1", "M1_relSE", "meanMass", "meanMass_relSE")
         fig, axes = plt.subplots(3, 2, figsize=(15, 3 * max(1.6, 7.0 / span) + 1.5),
@@ -265,9 +286,6 @@ def map_figure(res, out, title="", case=None):
         fig, axes = plt.subplots(2, 3, figsize=(15, 2 * max(2.2, min(5.0, 4.6 / span)) + 1.2),
                                  squeeze=False)
     ranges = {}
-    labels = {"M0": "M0 [1/m³]", "M1": "M1 [mass unit/m³]", "meanMass": "M1/M0 [mass unit]",
-              "M0_relSE": "relative standard error of M0", "M1_relSE": "relative standard error of M1",
-              "meanMass_relSE": "relative standard error of M1/M0"}
     segments = outline(tri) if tri is not None else polygon_outline(polygons)
     for q, ax in zip(order, axes.ravel()):
         z = vals[q]
@@ -296,25 +314,138 @@ def map_figure(res, out, title="", case=None):
         ax.set_aspect("equal")
         ax.xaxis.set_major_locator(MaxNLocator(4))
         ax.yaxis.set_major_locator(MaxNLocator(4))
-        ax.set_title(labels[q], fontsize=9)
+        ax.set_title(LABELS[q], fontsize=9)
         ax.set_xlabel("%s [m]" % names[a])
         ax.set_ylabel("%s [m]" % names[b])
-    fig.suptitle("Time-averaged moments per cell%s" % (": " + title if title else ""),
-                 fontsize=10)
+    fig.suptitle(title, fontsize=10)
     fig.tight_layout()
-    os.makedirs(out, exist_ok=True)
-    png = os.path.join(out, "maps.png")
     fig.savefig(png, dpi=110)
     plt.close(fig)
+    return ranges
 
-    path = os.path.join(out, "maps.csv")
+
+def _write_cells(path, notes, rows, centres, vals):
+    """The CSV of a map: the notes as '# ' lines, then each row's cell (the report's index),
+    centre and plotted values."""
     with open(path, "w") as f:
-        f.write("# colour ranges: %s\n" % ", ".join("%s %.12g %.12g" % (q, *ranges[q])
-                                                  for q in QUANTITIES))
-        f.write("# cells drawn as %s\n" % ("the mesh's polygons" if tri is None
-                                           else "triangles between the centres"))
+        for note in notes:
+            f.write("# %s\n" % note)
         f.write("cell,x,y,z," + ",".join(QUANTITIES) + "\n")
-        for i, c in enumerate(centres):
-            f.write("%d,%.12g,%.12g,%.12g," % (i, *c)
+        for i in rows:
+            f.write("%d,%.12g,%.12g,%.12g," % (i, *centres[i])
                     + ",".join("%.12g" % vals[q][i] for q in QUANTITIES) + "\n")
+
+
+def _ranges_note(ranges):
+    return "colour ranges: %s" % ", ".join("%s %.12g %.12g" % (q, *ranges[q])
+                                           for q in QUANTITIES)
+
+
+def map_figure(res, out, title="", case=None):
+    """maps.png and maps.csv of a two-dimensional report (see the module's text): each
+    cell's polygon in its colour where the case's mesh gives them (cell_polygons), else the
+    values at the centres, linear in the triangles between them; returns their paths."""
+    centres = np.asarray(res["centres"], float)
+    a, b = plane(centres)
+    polygons = cell_polygons(case, centres) if case else None
+    tri = None if polygons is not None else triangulation(centres[:, a], centres[:, b])
+    vals = values(res)
+    os.makedirs(out, exist_ok=True)
+    png = os.path.join(out, "maps.png")
+    ranges = _draw(vals, a, b, polygons, tri, "Time-averaged moments per cell%s"
+                   % (": " + title if title else ""), png)
+    path = os.path.join(out, "maps.csv")
+    _write_cells(path, [_ranges_note(ranges),
+                        "cells drawn as %s" % ("the mesh's polygons" if tri is None
+                                               else "triangles between the centres")],
+                 range(len(centres)), centres, vals)
+    return [png, path]
+
+
+def _rows(mesh, cell_of_row, cells):
+    """The report's rows of the mesh's cells."""
+    row_of_cell = np.full(mesh["nCells"], -1, dtype=np.int64)
+    row_of_cell[cell_of_row] = np.arange(len(cell_of_row))
+    return row_of_cell[cells]
+
+
+def slice_figure(res, out, mesh, cell_of_row, axis, value, title=""):
+    """slice_<axis><value>.png and .csv: the maps of map_figure on the cells the plane
+    x[axis] = value cuts, each drawn as its cut (sections.slice_polygons); cell_of_row the
+    mesh cell of each of the report's rows (sections.match_cells). ValueError where the
+    plane misses the mesh."""
+    from . import sections
+
+    cells, polygons = sections.slice_polygons(mesh, axis, value)
+    name = "xyz"[axis]
+    if not len(cells):
+        lo, hi = mesh["points"][:, axis].min(), mesh["points"][:, axis].max()
+        raise ValueError("the plane %s = %g does not cut the mesh (%s from %g to %g)"
+                         % (name, value, name, lo, hi))
+    rows = _rows(mesh, cell_of_row, cells)
+    vals = values(res)
+    sub = {q: vals[q][rows] for q in QUANTITIES}
+    a, b = [k for k in range(3) if k != axis]
+    os.makedirs(out, exist_ok=True)
+    stem = os.path.join(out, "slice_%s%g" % (name, value))
+    ranges = _draw(sub, a, b, polygons, None, "Time-averaged moments per cell on the plane "
+                   "%s = %g%s" % (name, value, ": " + title if title else ""), stem + ".png")
+    _write_cells(stem + ".csv", [_ranges_note(ranges),
+                                 "cells cut by the plane %s = %g, drawn as their cuts"
+                                 % (name, value)],
+                 rows, np.asarray(res["centres"], float), vals)
+    return [stem + ".png", stem + ".csv"]
+
+
+def line_figure(res, out, mesh, cell_of_row, p0, p1, name, title=""):
+    """<name>.png and <name>.csv: the time-averaged M0, M1 and M1/M0 of each cell the
+    segment p0 p1 crosses (sections.line_cells), against the distance along it from p0: a
+    step per cell from its entry to its exit, with the 95 % interval as a band (the mean
+    mass's from the relative errors of M0 and M1 as in values()). ValueError where the
+    segment misses the mesh."""
+    from . import sections
+    from .plots import _pyplot
+
+    p0, p1 = np.asarray(p0, float), np.asarray(p1, float)
+    cells, t_in, t_out = sections.line_cells(mesh, p0, p1)
+    where = "(%g %g %g) to (%g %g %g)" % (*p0, *p1)
+    if not len(cells):
+        raise ValueError("the line %s does not cross the mesh" % where)
+    rows = _rows(mesh, cell_of_row, cells)
+    length = np.linalg.norm(p1 - p0)
+    s_in, s_out = t_in * length, t_out * length
+    mean, ci = res["mean"][rows], res["ci"][rows]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        ratio = np.where(mean[:, 0] > 0, mean[:, 1] / mean[:, 0], np.nan)
+        ratio_ci = np.abs(ratio) * np.hypot(ci[:, 0] / mean[:, 0], ci[:, 1] / mean[:, 1])
+    columns = (("M0", mean[:, 0], ci[:, 0]), ("M1", mean[:, 1], ci[:, 1]),
+               ("meanMass", ratio, ratio_ci))
+    plt = _pyplot()
+    fig, axes = plt.subplots(1, 3, figsize=(15, 4), squeeze=False)
+    x = np.column_stack([s_in, s_out]).ravel()
+    for (q, m, c), ax in zip(columns, axes.ravel()):
+        y, e = np.repeat(m, 2), np.repeat(c, 2)
+        ax.fill_between(x, y - e, y + e, color="C0", alpha=0.25, linewidth=0,
+                        label="95 % interval")
+        ax.plot(x, y, color="C0", lw=1.2, label="cell mean")
+        ax.set_xlabel("distance from (%g %g %g) [m]" % tuple(p0))
+        ax.set_ylabel(LABELS[q])
+        ax.grid(alpha=0.3)
+    axes[0, 0].legend(fontsize=8)
+    fig.suptitle("Time-averaged moments along %s, %d cells%s"
+                 % (where, len(cells), ": " + title if title else ""), fontsize=10)
+    fig.tight_layout()
+    os.makedirs(out, exist_ok=True)
+    png, path = os.path.join(out, name + ".png"), os.path.join(out, name + ".csv")
+    fig.savefig(png, dpi=110)
+    plt.close(fig)
+    centres = np.asarray(res["centres"], float)
+    with open(path, "w") as f:
+        f.write("# the cells along the line %s, from where it enters each to where it "
+                "leaves, distances from its start [m]\n" % where)
+        f.write("s_in,s_out,cell,x,y,z," + ",".join("%s,%s_ci95" % (q, q) for q, _, _ in columns)
+                + "\n")
+        for k, r in enumerate(rows):
+            f.write("%.12g,%.12g,%d,%.12g,%.12g,%.12g," % (s_in[k], s_out[k], r, *centres[r])
+                    + ",".join("%.12g,%.12g" % (m[k], c[k]) for _, m, c in columns) + "\n")
     return [png, path]
