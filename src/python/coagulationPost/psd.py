@@ -390,20 +390,29 @@ def diameter_figure(runs, out, u=1.0, x_inlet=0.0, labels=None, density=None, ma
         B = p["nBins"]
         d, lo, hi, dlog = diameter_bins(p, rho, unit)
         nm = 1e9 * d
+        # micrometres for particles of a micrometre and more
+        scale, unit_name = (1e-3, "µm") if np.nanmin(nm) >= 1000 else (1.0, "nm")
         colours = _pyplot().cm.viridis(np.linspace(0, 0.85, len(p["regions"])))
         for i in range(len(p["regions"])):
             y, dy = mean[i, :B] / dlog, ci[i, :B] / dlog
             cmd, gmd, sg = size_statistics(d, mean[i, :B], lo, hi)
             show = y > 0
-            ax.plot(nm[show], y[show], "o-", ms=3, lw=1, color=colours[i],
-                    label="%s x = %.4g m: CMD %.3g nm, GMD %.3g nm, σg %.3f"
-                    % (p["regions"][i], p["centres"][i, 0], 1e9 * cmd, 1e9 * gmd, sg))
-            ax.fill_between(nm[show], np.maximum(y - dy, 0)[show], (y + dy)[show],
-                            color=colours[i], alpha=0.2, lw=0)
+            ax.plot(scale * nm[show], y[show], "-", lw=1, color=colours[i],
+                    label="%s x = %.4g m: CMD %.3g %s, GMD %.3g %s, σg %.3f"
+                    % (p["regions"][i], p["centres"][i, 0], 1e9 * scale * cmd, unit_name,
+                       1e9 * scale * gmd, unit_name, sg))
+            # the band where the interval stays above zero; a bin whose interval reaches
+            # zero (a log axis has no zero) as an open marker without a band
+            firm = show & (y - dy > 0)
+            ax.plot(scale * nm[firm], y[firm], "o", ms=3, color=colours[i])
+            ax.plot(scale * nm[show & ~firm], y[show & ~firm], "o", ms=3.5, mfc="none",
+                    color=colours[i])
+            ax.fill_between(scale * nm, np.where(firm, y - dy, np.nan),
+                            np.where(firm, y + dy, np.nan), color=colours[i], alpha=0.2, lw=0)
             ex = ref[i] / dlog if ref is not None else np.full(B, np.nan)
             if ref is not None:
                 r = np.where(ex > 1e-12 * np.nanmax(ex), ex, np.nan)
-                ax.plot(nm, r, "-", color="k", lw=0.8, zorder=3,
+                ax.plot(scale * nm, r, "-", color="k", lw=0.8, zorder=3,
                         label="exact n(d, t = x/u)" if i == 0 else None)
             for b in range(B):
                 rows.append("%d,%s,%.8g,%d,%.10g,%.10g,%.10g,%.10g"
@@ -411,14 +420,17 @@ def diameter_figure(runs, out, u=1.0, x_inlet=0.0, labels=None, density=None, ma
                                ex[b]))
         ax.set_xscale("log")
         ax.set_yscale("log")
-        # diameters as plain numbers at 1, 2 and 5 of each decade (not powers of ten)
+        # diameters as plain numbers at 1, 2 and 5 of each decade (not powers of ten), more
+        # where the sizes span less than a decade and a half
         from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
-        ax.xaxis.set_major_locator(LogLocator(base=10, subs=(1.0, 2.0, 5.0)))
+        span = np.log10(np.nanmax(nm) / np.nanmin(nm))
+        subs = (1.0, 2.0, 5.0) if span > 1.5 else (1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 7.0)
+        ax.xaxis.set_major_locator(LogLocator(base=10, subs=subs))
         ax.xaxis.set_major_formatter(FuncFormatter(lambda v, _: "%g" % v))
         ax.xaxis.set_minor_formatter(NullFormatter())
-        ax.set_xlabel("d [nm] (spheres of %g kg/m³)" % rho)
+        ax.set_xlabel("d [%s] (spheres of %g kg/m³)" % (unit_name, rho))
         ax.set_ylabel("dN/dlog₁₀d [m⁻³]")
-        ax.set_title("%s: size distribution, 95 %% intervals shaded"
+        ax.set_title("%s: size distribution, 95 %% intervals shaded (open: reaching 0)"
                      % (labels[j] if labels else p["case"]), fontsize=9)
         ax.legend(fontsize=6)
     fig.tight_layout()

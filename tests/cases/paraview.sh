@@ -1,0 +1,89 @@
+#!/bin/bash
+# SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
+# ParaView's picture of a case (etc/paraview/coagulationView.py under pvbatch): a 3-D box (the
+# slice through its middle) and the 1-D duct (seen face on), each from a short run and
+# foamToVTK. In each picture the cells' view shows the domain filled with M0's colours
+# (viridis) and the particles' view shows the particles' splats (inferno) inside it; a case
+# without VTK files and an unknown field are refused (exit 2). Skipped (exit 77) where
+# pvbatch, or a display or xvfb-run, is missing.
+. "$(dirname "$0")/caseLib.sh"
+
+pv=$(paraViewCommand) || { echo "pvbatch or xvfb-run not found: skipped"; exit 77; }
+script="$COAGULATIONFOAM_DIR/etc/paraview/coagulationView.py"
+
+# shortCase dir: the duct's inputs for 100 steps of 1e-3 s, one write
+shortCase()
+{
+    setEntry . system/controlDict endTime 0.1
+    setEntry . system/controlDict writeInterval 0.1
+    setEntry . system/controlDict deltaT 1e-3
+}
+
+c=$(newCase constantKernelDuct paraview_box)
+cd "$c"
+sed -i 's/(50 1 1)/(20 5 5)/; s/^h       0.004;/h       0.05;/; s/type empty;/type wall;/' \
+    system/blockMeshDict
+sed -i 's/type            empty;/type            slip;/' 0/U
+rm -f log.blockMesh && runApplication blockMesh
+shortCase
+runApplication coagulationFoam
+runApplication foamToVTK -latestTime
+runParaView box.png --size 1200x600
+box=$c/box.png
+
+c=$(newCase constantKernelDuct paraview_duct)
+cd "$c"
+shortCase
+runApplication coagulationFoam
+runApplication foamToVTK -latestTime
+runParaView duct.png --size 1200x600
+duct=$c/duct.png
+
+# the domain's pixels in each view: the picture is the two views stacked (both domains are
+# long), each the domain above its colour bar's 170 pixels, scaled to fit 90 % of the view
+"$COAGULATIONFOAM_PYTHON" - "$box" 0.2 0.05 "$duct" 0.2 0.004 <<'PY' || fail "the pictures"
+import sys
+import numpy as np
+import matplotlib.image as mpimg
+from matplotlib import cm
+
+ok = True
+args = sys.argv[1:]
+for png, across, up in zip(args[0::3], map(float, args[1::3]), map(float, args[2::3])):
+    img = (mpimg.imread(png)[:, :, :3] * 255).round().astype(int)
+    h, w, _ = img.shape
+    ph, bar = h // 2, 170
+    k = min(0.9 * w / across, 0.9 * (ph - bar) / up)
+    area = (k * across) * (k * up)
+    background = img[2, w // 2]
+    # the cells fill the domain in the map's colours; the particles' discs cover a part of it,
+    # their edges blended with the background and each other
+    for view, cmap, least, mapped in ((0, cm.viridis, 0.9, 0.9), (1, cm.inferno, 0.3, 0.4)):
+        part = img[view * ph: view * ph + ph - bar].reshape(-1, 3)
+        shown = part[np.any(part != background, axis=1)]
+        colours = np.unique(shown, axis=0)
+        ref = (cmap(np.linspace(0, 1, 256))[:, :3] * 255)
+        # the colours of the map (shading and splat edges blend some with the background)
+        dist = np.min(np.linalg.norm(shown[:, None, :] - ref[None, :, :], axis=2), axis=1)
+        on_map = np.mean(dist < 12)
+        good = len(shown) >= least * area and len(colours) >= 10 and on_map > mapped
+        print("%s view %d: %d of %.0f domain pixels drawn, %d colours, %.0f %% on the map: %s"
+              % (png, view, len(shown), area, len(colours), 100 * on_map, "ok" if good else "FAIL"))
+        ok &= good
+sys.exit(0 if ok else 1)
+PY
+
+# refused: a case without VTK files, a field the series does not have
+mkdir -p "$workDir/paraview_empty"
+set +e
+(cd "$workDir/paraview_empty" && $pv "$script" --case . --png x.png) > err.log 2>&1
+rc=$?
+set -e
+[ "$rc" = 2 ] && grep -q "run foamToVTK first" err.log || { cat err.log; fail "no VTK: exit $rc"; }
+set +e
+$pv "$script" --case . --field M7 --png y.png > err.log 2>&1
+rc=$?
+set -e
+[ "$rc" = 2 ] && grep -q "no cell field M7" err.log || { cat err.log; fail "unknown field: exit $rc"; }
+[ ! -e y.png ] || fail "a picture written for an unknown field"
+echo "ParaView pictures: ok"
