@@ -22,6 +22,7 @@ is not in it.
 import argparse
 import glob
 import json
+import math
 import os
 import sys
 
@@ -31,7 +32,7 @@ from paraview.simple import (ColorBy, CreateLayout, CreateView, ExtractBlock,
                              OpenDataFile, SaveScreenshot, Show, Slice)
 
 
-BAR = 170  # the pixels below each picture for its colour bar
+BAR = 200  # the pixels below each picture for its colour bar
 
 
 def fail(msg):
@@ -110,8 +111,8 @@ def main(argv):
     else:
         w = int(args.size) if args.size else 1600
         pw = w if stacked else w / 2
-        view_h = min(max(0.9 * pw * extent[up] / extent[across], 80), 900) + BAR
-        h = int(2 * view_h if stacked else view_h)
+        view_h = int(min(max(0.9 * pw * extent[up] / extent[across], 80), 900)) + BAR
+        h = 2 * view_h if stacked else view_h
     pw, ph = (w, h / 2.0) if stacked else (w / 2.0, h)
     # the domain fills its view above the bar: k pixels a metre
     k = min(0.9 * pw / extent[across], 0.9 * (ph - BAR) / extent[up])
@@ -132,7 +133,7 @@ def main(argv):
     shown.RescaleTransferFunctionToDataRange(True, False)
     field_lut = GetColorTransferFunction(args.field)
     field_lut.ApplyPreset("Viridis (matplotlib)", True)
-    bar(field_lut, views[0], args.field)
+    bar(field_lut, views[0], args.field, shown_range(cells, args.field))
 
     # the particles: Point Gaussian splats, coloured by mass on a log scale, over the
     # mesh's outline
@@ -178,9 +179,34 @@ def main(argv):
         print("coagulationView: %s (t = %g)" % (args.png, time))
 
 
-def bar(lut, view, title):
-    """The colour bar of lut in view: horizontal, below the picture."""
+def shown_range(source, field):
+    """The range of the cell field shown."""
+    return source.CellData[field].GetRange()
+
+
+def nice_ticks(lo, hi, count=4):
+    """About count round values inside [lo, hi], none within 12 % of the range of its ends
+    (where the range's own labels are)."""
+    if not hi > lo:
+        return []
+    raw = (hi - lo) / count
+    step = 10.0 ** math.floor(math.log10(raw))
+    step *= min((m for m in (1, 2, 2.5, 5, 10) if m * step >= raw), default=10)
+    first = math.ceil(lo / step) * step
+    ticks = [first + i * step for i in range(int((hi - first) / step) + 1)]
+    margin = 0.12 * (hi - lo)
+    return [t for t in ticks if lo + margin < t < hi - margin]
+
+
+def bar(lut, view, title, linear_range=None):
+    """The colour bar of lut in view: horizontal, below the picture; on a linear scale
+    (linear_range given) labels at a few round values besides the range's ends (ParaView's
+    own crowd on a short bar)."""
     b = GetScalarBar(lut, view)
+    if linear_range is not None:
+        b.UseCustomLabels = 1
+        b.CustomLabels = nice_ticks(*linear_range)
+        b.AddRangeLabels = 1
     b.Title = title
     b.ComponentTitle = ""
     b.Orientation = "Horizontal"

@@ -40,7 +40,7 @@ runParaView duct.png --size 1200x600
 duct=$c/duct.png
 
 # the domain's pixels in each view: the picture is the two views stacked (both domains are
-# long), each the domain above its colour bar's 170 pixels, scaled to fit 90 % of the view
+# long), each the domain above its colour bar's 200 pixels, scaled to fit 90 % of the view
 "$COAGULATIONFOAM_PYTHON" - "$box" 0.2 0.05 "$duct" 0.2 0.004 <<'PY' || fail "the pictures"
 import sys
 import numpy as np
@@ -52,7 +52,7 @@ args = sys.argv[1:]
 for png, across, up in zip(args[0::3], map(float, args[1::3]), map(float, args[2::3])):
     img = (mpimg.imread(png)[:, :, :3] * 255).round().astype(int)
     h, w, _ = img.shape
-    ph, bar = h // 2, 170
+    ph, bar = h // 2, 200
     k = min(0.9 * w / across, 0.9 * (ph - bar) / up)
     area = (k * across) * (k * up)
     background = img[2, w // 2]

@@ -167,3 +167,29 @@ def test_short_series_corrections():
     cover = np.mean(np.abs(mean) <= ci)
     print("tau 20 N 320: coverage %.3f" % cover)
     assert 0.94 <= cover <= 0.99
+
+
+def test_mean_mass_interval_covers_the_ratio():
+    """The mean mass m1/m0 of 2000 cells, each an AR(1) series (tau 5, 800 samples) of M0
+    and M1 = R M0 + noise, strongly correlated (as a cell's M0 and M1 are): its 95 %
+    interval holds the true ratio for 90..99 % of the cells (94.6 %). The first-order bound
+    as if M0 and M1 were independent is more than 3 times wider (18 times here). A cell
+    whose M1 is exactly R M0 has a zero interval."""
+    rng = np.random.default_rng(21)
+    n, cells, R = 800, 2000, 2.5
+    phi = phi_of(5.0)
+    m0 = 100.0 + 10.0 * ar1(rng, phi, n, cells)
+    m1 = R * m0 + 2.0 * ar1(rng, phi, n, cells)
+    data = np.stack([m0, m1], axis=2)
+    mean, _, ci, _ = st.correlated_interval_masked(data)
+    ratio, ratio_ci = report.mean_mass_interval(data, mean, 0)
+    cover = np.mean(np.abs(ratio - R) <= ratio_ci)
+    bound = ratio * np.hypot(ci[:, 0] / mean[:, 0], ci[:, 1] / mean[:, 1])
+    print("coverage %.3f, median width %.4g, independent bound %.4g"
+          % (cover, np.median(ratio_ci), np.median(bound)))
+    assert np.allclose(ratio, mean[:, 1] / mean[:, 0])
+    assert 0.90 <= cover <= 0.99
+    assert np.median(bound / ratio_ci) > 3
+    exact = np.stack([m0, R * m0], axis=2)[:, :5]
+    mean, _, _, _ = st.correlated_interval_masked(exact)
+    assert np.allclose(report.mean_mass_interval(exact, mean, 0)[1], 0.0, atol=1e-12)

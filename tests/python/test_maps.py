@@ -47,7 +47,8 @@ def test_map_figure_writes_the_cells_values_and_ranges(tmp_path):
     n = len(c)
     mean = np.column_stack([1e12 * (1 + c[:, 0]), 3e12 * (1 + c[:, 1]), np.ones(n), np.ones(n)])
     ci = 0.02 * mean
-    res = {"centres": c, "mean": mean, "ci": ci}
+    ratio = mean[:, 1] / mean[:, 0]
+    res = {"centres": c, "mean": mean, "ci": ci, "meanMass": ratio, "meanMassCi": 0.01 * ratio}
     png, csv = maps.map_figure(res, str(tmp_path), "step")
     assert os.path.getsize(png) > 10000
     head = open(csv).readline()
@@ -56,7 +57,7 @@ def test_map_figure_writes_the_cells_values_and_ranges(tmp_path):
     assert np.allclose(rows["M0"], mean[:, 0]) and np.allclose(rows["M1"], mean[:, 1])
     assert np.allclose(rows["meanMass"], mean[:, 1] / mean[:, 0])
     assert np.allclose(rows["M0_relSE"], 0.02 / 1.96)
-    assert np.allclose(rows["meanMass_relSE"], np.hypot(0.02, 0.02) / 1.96)
+    assert np.allclose(rows["meanMass_relSE"], 0.01 / 1.96)
     # the colour range of each panel is its values' range
     ranges = dict((q, (float(a), float(b))) for q, a, b in
                   (part.split() for part in head.split(":", 1)[1].split(",")))
@@ -131,7 +132,10 @@ def test_an_empty_cell_is_drawn_without_a_value(tmp_path):
     mean = np.column_stack([np.full(len(c), 1e12), np.full(len(c), 2e12), np.ones(len(c)),
                             np.ones(len(c))])
     mean[5, :] = 0.0                                 # an empty cell
-    res = {"centres": c, "mean": mean, "ci": 0.02 * mean}
+    with np.errstate(invalid="ignore"):
+        ratio = mean[:, 1] / mean[:, 0]
+    res = {"centres": c, "mean": mean, "ci": 0.02 * mean, "meanMass": ratio,
+           "meanMassCi": 0.01 * ratio}
     png, csv = maps.map_figure(res, str(tmp_path))
     rows = np.genfromtxt(csv, delimiter=",", names=True, skip_header=2)
     assert np.isnan(rows["meanMass"][5]) and np.isfinite(rows["meanMass"][4])

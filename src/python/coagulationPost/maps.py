@@ -197,21 +197,19 @@ def cell_polygons(case, centres):
 
 def values(res):
     """Every cell's plotted values: {quantity: array} of QUANTITIES. The mean mass where
-    M0 > 0; its relative error to first order as if M0 and M1 were independent,
-    relSE(M1/M0)^2 = relSE(M1)^2 + relSE(M0)^2 (an upper bound: they are positively
-    correlated)."""
+    M0 > 0 and its relative error from the report's interval of it (report.compute's
+    meanMass and meanMassCi: the ratio's own interval, with the covariance of M0 and M1)."""
     mean, ci = res["mean"], res["ci"]
     se = ci / 1.96
     with np.errstate(invalid="ignore", divide="ignore"):
-        out = {
+        return {
             "M0": mean[:, 0],
             "M1": mean[:, 1],
-            "meanMass": np.where(mean[:, 0] > 0, mean[:, 1] / mean[:, 0], np.nan),
+            "meanMass": res["meanMass"],
             "M0_relSE": se[:, 0] / mean[:, 0],
             "M1_relSE": se[:, 1] / mean[:, 1],
+            "meanMass_relSE": res["meanMassCi"] / 1.96 / res["meanMass"],
         }
-    out["meanMass_relSE"] = np.hypot(out["M0_relSE"], out["M1_relSE"])
-    return out
 
 
 def split_invalid(tri, finite):
@@ -400,9 +398,8 @@ def slice_figure(res, out, mesh, cell_of_row, axis, value, title=""):
 def line_figure(res, out, mesh, cell_of_row, p0, p1, name, title=""):
     """<name>.png and <name>.csv: the time-averaged M0, M1 and M1/M0 of each cell the
     segment p0 p1 crosses (sections.line_cells), against the distance along it from p0: a
-    step per cell from its entry to its exit, with the 95 % interval as a band (the mean
-    mass's from the relative errors of M0 and M1 as in values()). ValueError where the
-    segment misses the mesh."""
+    step per cell from its entry to its exit, with the 95 % interval as a band. ValueError
+    where the segment misses the mesh."""
     from . import sections
     from .plots import _pyplot
 
@@ -415,11 +412,8 @@ def line_figure(res, out, mesh, cell_of_row, p0, p1, name, title=""):
     length = np.linalg.norm(p1 - p0)
     s_in, s_out = t_in * length, t_out * length
     mean, ci = res["mean"][rows], res["ci"][rows]
-    with np.errstate(invalid="ignore", divide="ignore"):
-        ratio = np.where(mean[:, 0] > 0, mean[:, 1] / mean[:, 0], np.nan)
-        ratio_ci = np.abs(ratio) * np.hypot(ci[:, 0] / mean[:, 0], ci[:, 1] / mean[:, 1])
     columns = (("M0", mean[:, 0], ci[:, 0]), ("M1", mean[:, 1], ci[:, 1]),
-               ("meanMass", ratio, ratio_ci))
+               ("meanMass", res["meanMass"][rows], res["meanMassCi"][rows]))
     plt = _pyplot()
     fig, axes = plt.subplots(1, 3, figsize=(15, 4), squeeze=False)
     x = np.column_stack([s_in, s_out]).ravel()

@@ -86,8 +86,9 @@ def compute(cases, t_relax=None, t_end=None, u=None, x_inlet=0.0, analytic_kind=
         runs.append(info)
         # the run's ordered time series: its own mean, n_eff, interval and tau_int
         xs = np.array(reader.cells.centres)[ids, 0] if len(ids) else np.zeros(0)
-        per_run.append((ids, statistics.correlated_interval_masked(
-            data, min_window=_min_window(reader.ref, xs, u, x_inlet, correlation_time))))
+        window = _min_window(reader.ref, xs, u, x_inlet, correlation_time)
+        r = statistics.correlated_interval_masked(data, min_window=window)
+        per_run.append((ids, r + mean_mass_interval(data, r[0], window)))
     ref = reader.ref
     centres = np.array(reader.cells.centres)
     order = cell_order(centres)
@@ -97,14 +98,23 @@ def compute(cases, t_relax=None, t_end=None, u=None, x_inlet=0.0, analytic_kind=
     mean, var, sd, ci_iid = st["mean"], st["var"], st["sd"], st["ci"]
     ncells, nmom = len(reader.cells), reader.nmom
     run_arrays = []                       # per run: mean, neff, ci, tau [cells][moments]
+    ratio_arrays = []                     # per run: the mean mass and its ci [cells]
     for ids, r in per_run:
         full = [np.full((ncells, nmom), np.nan) for _ in range(4)]
-        for f, v in zip(full, r):
+        for f, v in zip(full, r[:4]):
             f[ids] = v
         run_arrays.append([f[order] for f in full])
+        ratio = [np.full(ncells, np.nan) for _ in range(2)]
+        for f, v in zip(ratio, r[4:]):
+            f[ids] = v
+        ratio_arrays.append([f[order] for f in ratio])
     R = len(per_run)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        mean_mass = np.where(acc.mean[order][:, 0] > 0,
+                             acc.mean[order][:, 1] / acc.mean[order][:, 0], np.nan)
     if R == 1:
         _, neff, ci, tau = run_arrays[0]
+        mean_mass_ci = ratio_arrays[0][1]
         interval = ("one run: t_{0.975, N/(2M+1)} sqrt(var(mean)), var(mean) = 2 tau_int "
                     "gamma0/(N-2M-1), n_eff = sd^2/var(mean), tau_int the integrated "
                     "autocorrelation time summed over M lags (Sokal window c = %g)"
@@ -114,6 +124,8 @@ def compute(cases, t_relax=None, t_end=None, u=None, x_inlet=0.0, analytic_kind=
             else "%g s" % correlation_time)
     else:
         _, ci = statistics.standard_error_from_realisations(np.array([a[0] for a in run_arrays]))
+        _, mean_mass_ci = statistics.standard_error_from_realisations(
+            np.array([a[0] for a in ratio_arrays]))
         neff = np.sum([a[1] for a in run_arrays], axis=0)
         tau = np.mean([a[3] for a in run_arrays], axis=0)
         interval = ("%d realisations: t_{0.975, R-1} sd(realisation means) / sqrt(R)" % R)
@@ -193,8 +205,22 @@ def compute(cases, t_relax=None, t_end=None, u=None, x_inlet=0.0, analytic_kind=
     return {
         "meta": meta, "centres": centres, "x": x, "count": count, "mean": mean,
         "sd": sd, "ci": ci, "ciIid": ci_iid, "neff": neff, "tauInt": tau, "var": var, "analytic": ana_avg, "analyticCentre": ana_ctr,
-        "rel": rel, "nsd": nsd, "edges": (lo, hi),
+        "rel": rel, "nsd": nsd, "edges": (lo, hi), "meanMass": mean_mass,
+        "meanMassCi": mean_mass_ci,
     }
+
+
+def mean_mass_interval(data, mean, min_window):
+    """The mean mass R = m1/m0 of each cell of one run, data [N][cells][moments] (NaN: no
+    sample) with the run's means [cells][moments], and its 95 % half-width: that of the
+    mean of z_t = (M1_t - R M0_t)/m0 (the ratio estimator's linearisation, which keeps the
+    covariance of M0 and M1: R's error is mean(z) to first order), by the same interval for
+    correlated samples as the moments'. NaN where m0 = 0."""
+    with np.errstate(invalid="ignore", divide="ignore"):
+        ratio = np.where(mean[:, 0] > 0, mean[:, 1] / mean[:, 0], np.nan)
+        z = (data[:, :, 1] - ratio * data[:, :, 0]) / mean[:, 0]
+    _, _, ci, _ = statistics.correlated_interval_masked(z[:, :, None], min_window=min_window)
+    return ratio, np.where(np.isfinite(ratio), ci[:, 0], np.nan)
 
 
 # --------------------------------------------------------------------------- output
