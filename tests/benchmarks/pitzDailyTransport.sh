@@ -25,17 +25,7 @@ py="$COAGULATIONFOAM_PYTHON"
 
 # 1. The flow: pitzDaily by simpleFoam, to convergence
 flow="$out/flow"
-examples=/usr/share/doc/openfoam-examples/examples/incompressible/simpleFoam/pitzDaily
-if [ -d "$examples" ]; then
-    cp -r "$examples" "$flow"
-    find "$flow" -name "*.gz" -exec gunzip {} +
-else
-    cache="${COAGULATIONFOAM_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/coagulationFoam}"
-    tarball=$(ls "$cache"/openfoam_*.orig.tar.* 2>/dev/null | head -1)
-    [ -n "$tarball" ] || { echo "no openfoam-examples and no OpenFOAM source tarball in $cache (etc/bootstrap puts it there)" >&2; exit 1; }
-    tar -xf "$tarball" -C "$out" --wildcards '*/tutorials/incompressible/simpleFoam/pitzDaily/*'
-    mv "$out"/*/tutorials/incompressible/simpleFoam/pitzDaily "$flow"
-fi
+openfoamTutorial incompressible/simpleFoam/pitzDaily "$flow"
 (cd "$flow" && runApplication blockMesh && runApplication simpleFoam) > /dev/null
 latest=$(cd "$flow" && foamListTimes -latestTime)
 echo "pitzDaily: simpleFoam converged at iteration $latest"

@@ -28,7 +28,7 @@ rm -f log.blockMesh && runApplication blockMesh
 shortCase
 runApplication coagulationFoam
 runApplication foamToVTK -latestTime
-runParaView box.png --size 1200x600
+runParaView box.png --size 1200x800
 box=$c/box.png
 
 c=$(newCase constantKernelDuct paraview_duct)
@@ -36,7 +36,7 @@ cd "$c"
 shortCase
 runApplication coagulationFoam
 runApplication foamToVTK -latestTime
-runParaView duct.png --size 1200x600
+runParaView duct.png --size 1200x800
 duct=$c/duct.png
 
 # the domain's pixels in each view: the picture is the two views stacked (both domains are

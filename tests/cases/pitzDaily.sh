@@ -1,0 +1,50 @@
+#!/bin/bash
+# SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
+# The pitzDaily tutorial from its own Allrun, reduced (60 simpleFoam iterations, 200
+# particle steps): OpenFOAM's tutorial copied, the flow, coagulationFoam, foamToVTK, the
+# report. The balances close; the report draws the 2-D maps and the two lines: the line
+# across the channel runs from wall to wall through contiguous cells, and every line cell
+# holds its cell's statistics of moments_full.csv; ParaView's picture where pvbatch is.
+. "$(dirname "$0")/caseLib.sh"
+
+c="$workDir/pitzDaily"
+rm -rf "$c"; mkdir -p "$workDir"
+cp -r "$COAGULATIONFOAM_DIR/tutorials/pitzDaily" "$c"
+cd "$c"
+./Allclean -all > /dev/null
+openfoamTutorial incompressible/simpleFoam/pitzDaily flow
+setEntry flow system/controlDict endTime 60
+setEntry flow system/controlDict writeInterval 60
+setEntry . system/controlDict endTime 0.01
+setEntry . system/controlDict writeInterval 0.01
+setEntry . constant/coagulationProperties sampling/tRelax 0.004
+setEntry . constant/coagulationProperties sampling/sampleInterval 5e-4
+./Allrun > log.Allrun 2>&1 || { tail -30 log.Allrun; fail "Allrun"; }
+checkBalance log.coagulationFoam
+for f in maps.png maps.csv line1.png line1.csv line2.png line2.csv; do
+    [ -s "results/$f" ] || fail "no results/$f"
+done
+[ ! -e results/moments.png ] || fail "profiles along x drawn for a 2-D case"
+if paraViewCommand > /dev/null; then
+    [ -s results/paraview.png ] || fail "no ParaView picture"
+fi
+"$COAGULATIONFOAM_PYTHON" - <<'PY' || fail "the lines"
+import numpy as np
+full = np.genfromtxt("results/moments_full.csv", delimiter=",", names=True)
+key = {tuple(np.round([r["x"], r["y"], r["z"]], 9)): r for r in full}
+good = True
+for name, length in (("line1", 0.0508), ("line2", 0.3106)):
+    rows = np.atleast_1d(np.genfromtxt("results/%s.csv" % name, delimiter=",", names=True,
+                                       skip_header=1))
+    ref = [key[tuple(np.round([r["x"], r["y"], r["z"]], 9))] for r in rows]
+    ok = (len(rows) > 20 and np.isclose(rows["s_in"][0], 0, atol=1e-9)
+          and np.isclose(rows["s_out"][-1], length, rtol=1e-6)
+          and np.allclose(rows["s_in"][1:], rows["s_out"][:-1], rtol=0, atol=1e-9)
+          and np.allclose(rows["M0"], [r["M0_mean"] for r in ref], rtol=1e-9)
+          and np.allclose(rows["M0_ci95"], [r["M0_ci95"] for r in ref], rtol=1e-9))
+    print("%s: %d cells from s = %g to %g, contiguous, M0 and its interval as moments_full.csv: %s"
+          % (name, len(rows), rows["s_in"][0], rows["s_out"][-1], "ok" if ok else "FAIL"))
+    good &= ok
+raise SystemExit(0 if good else 1)
+PY
+echo "PASS pitzDaily: the tutorial's pipeline, its maps and lines"
