@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 # The pitzDaily tutorial from its own Allrun, reduced (60 simpleFoam iterations, 200
 # particle steps): OpenFOAM's tutorial copied, the flow, coagulationFoam, foamToVTK, the
-# report. The balances close; the report draws the 2-D maps and the two lines: the line
+# report. The balances close; the report draws the 2-D maps (in diameter: the case's
+# material reaches it through the samples) and the two lines: the line
 # across the channel runs from wall to wall through contiguous cells, and every line cell
 # holds its cell's statistics of moments_full.csv; ParaView's picture where pvbatch is.
 . "$(dirname "$0")/caseLib.sh"
@@ -25,6 +26,15 @@ for f in maps.png maps.csv line1.png line1.csv line2.png line2.csv; do
     [ -s "results/$f" ] || fail "no results/$f"
 done
 [ ! -e results/moments.png ] || fail "profiles along x drawn for a 2-D case"
+# the case's material reaches the report through the samples: the maps in diameter, the
+# smallest that of the entering 10 nm particles
+"$COAGULATIONFOAM_PYTHON" - <<'PY' || fail "the maps' diameters"
+import numpy as np
+rows = np.genfromtxt("results/maps.csv", delimiter=",", names=True, skip_header=2)
+d = rows["meanDiameter"][np.isfinite(rows["meanDiameter"])]
+print("diameter of the mean mass: %.4f .. %.4f nm" % (d.min(), d.max()))
+raise SystemExit(0 if abs(d.min() - 9.9983) < 1e-3 and d.max() < 20 else 1)
+PY
 if paraViewCommand > /dev/null; then
     [ -s results/paraview.png ] || fail "no ParaView picture"
 fi

@@ -294,3 +294,28 @@ def test_round_off_on_a_layer_of_faces(tmp_path):
     i, j, k = _ijk(cells)
     assert np.array_equal(i, np.arange(4)) and len(np.unique(j)) == 1 and len(np.unique(k)) == 1
     assert np.allclose(t_out[:-1], t_in[1:], rtol=0, atol=1e-9)
+
+
+def test_figures_in_diameter_with_a_material(tmp_path):
+    """With a density and a mass unit, the maps and the line show the diameter of the mean
+    mass, d = (6 m u / (pi rho))^(1/3) in nm, and its interval a third of the mass's
+    relative one."""
+    from coagulationPost import maps
+
+    case, mesh, res, cell_of_row = _report(tmp_path)
+    material = (1800.0, 9.42e-22)                       # 1 unit: a 10 nm sphere
+    png, csv = maps.slice_figure(res, str(tmp_path / "out"), mesh, cell_of_row, 2, 1.2,
+                                 material=material)
+    rows = np.genfromtxt(csv, delimiter=",", names=True, skip_header=2)
+    m = rows["meanMass"]
+    d = 1e9 * (6 * m * 9.42e-22 / (np.pi * 1800.0)) ** (1 / 3)
+    assert np.allclose(rows["meanDiameter"], d) and np.all((d > 10) & (d < 20))
+    assert np.allclose(rows["meanDiameter_relSE"], 0.07 / 1.96 / 3)
+    assert "meanDiameter" in open(csv).readline()            # drawn: in the colour ranges
+    png, csv = maps.line_figure(res, str(tmp_path / "out"), mesh, cell_of_row,
+                                [-0.1, 0.02, 1.2], [0.8, 0.02, 1.2], "line1", material=material)
+    rows = np.genfromtxt(csv, delimiter=",", names=True, skip_header=1)
+    r = rows["cell"].astype(int)
+    d = 1e9 * (6 * res["meanMass"][r] * 9.42e-22 / (np.pi * 1800.0)) ** (1 / 3)
+    assert np.allclose(rows["meanDiameter"], d)
+    assert np.allclose(rows["meanDiameter_ci95"], d * 0.07 / 3)

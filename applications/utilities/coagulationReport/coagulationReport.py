@@ -97,10 +97,11 @@ def parse_args(argv):
     p.add_argument("--psd-compare", metavar="DIR", default=None,
                    help="a second case whose PSD of the same NAME is plotted beside")
     p.add_argument("--density", type=float, default=None, metavar="RHO",
-                   help="--psd: the particles' density [kg/m3] for the plot in diameter "
-                        "(sizeDistributionDiameter.png; default: the case's 'particles')")
+                   help="the particles' density [kg/m3] for the diameters: the PSD's plot in "
+                        "diameter (sizeDistributionDiameter.png), the maps' and lines' "
+                        "diameter of the mean mass (default: the case's 'particles')")
     p.add_argument("--mass-unit", type=float, default=None, metavar="KG",
-                   help="--psd: kg per unit of the particles' masses (default: the case's "
+                   help="kg per unit of the particles' masses (default: the case's "
                         "'particles' massUnit, else 1)")
     g = p.add_argument_group("checks (exit 1 on failure)")
     g.add_argument("--check", action="store_true",
@@ -195,6 +196,15 @@ def parse_point(text):
     return point
 
 
+def material(args, res):
+    """(density, kg per mass unit) for the maps' and lines' diameters: --density and
+    --mass-unit, else the samples' attributes (the case's 'particles'); None without a
+    density."""
+    density = args.density or res["meta"].get("density")
+    unit = args.mass_unit or res["meta"].get("massUnit") or 1.0
+    return (density, unit) if density else None
+
+
 def report_sections(args, res, out, dims):
     """The slices and lines of a mesh: those asked for, or on a 3-D mesh the plane through
     its middle across its thinnest extent; their files."""
@@ -230,10 +240,11 @@ def report_sections(args, res, out, dims):
     written = []
     try:
         for axis, value in slices:
-            written += maps.slice_figure(res, out, mesh, cell_of_row, axis, value, title)
+            written += maps.slice_figure(res, out, mesh, cell_of_row, axis, value, title,
+                                         material(args, res))
         for k, (p0, p1) in enumerate(lines):
             written += maps.line_figure(res, out, mesh, cell_of_row, p0, p1,
-                                        "line%d" % (k + 1), title)
+                                        "line%d" % (k + 1), title, material(args, res))
     except ValueError as e:
         raise InputError(str(e)) from None
     return written
@@ -316,7 +327,7 @@ def main(argv=None):
                                             args.check_rel_tol if args.check else None)
         elif dims == 2:
             written += maps.map_figure(res, out, os.path.basename(os.path.abspath(args.case)),
-                                       args.case)
+                                       args.case, material(args, res))
         if not args.no_plots:
             written += report_sections(args, res, out, dims)
         ok = True

@@ -36,6 +36,8 @@ import re
 import numpy as np
 
 QUANTITIES = ("M0", "M1", "meanMass", "M0_relSE", "M1_relSE", "meanMass_relSE")
+# with the particles' material: the diameter of the mean mass
+DIAMETER = ("meanDiameter", "meanDiameter_relSE")
 
 
 def dimension(centres, rel_tol=1e-9):
@@ -195,14 +197,17 @@ def cell_polygons(case, centres):
     return [poly[cells[j]] for j in nearest]
 
 
-def values(res):
+def values(res, material=None):
     """Every cell's plotted values: {quantity: array} of QUANTITIES. The mean mass where
     M0 > 0 and its relative error from the report's interval of it (report.compute's
-    meanMass and meanMassCi: the ratio's own interval, with the covariance of M0 and M1)."""
+    meanMass and meanMassCi: the ratio's own interval, with the covariance of M0 and M1).
+    With material = (density [kg/m3], kg per mass unit) also DIAMETER: the diameter of a
+    sphere of the mean mass [nm], d = (6 m / (pi rho))^(1/3), and its relative error, a
+    third of the mass's (to first order)."""
     mean, ci = res["mean"], res["ci"]
     se = ci / 1.96
     with np.errstate(invalid="ignore", divide="ignore"):
-        return {
+        out = {
             "M0": mean[:, 0],
             "M1": mean[:, 1],
             "meanMass": res["meanMass"],
@@ -210,6 +215,15 @@ def values(res):
             "M1_relSE": se[:, 1] / mean[:, 1],
             "meanMass_relSE": res["meanMassCi"] / 1.96 / res["meanMass"],
         }
+    if material:
+        out["meanDiameter"] = sphere_diameter_nm(out["meanMass"], *material)
+        out["meanDiameter_relSE"] = out["meanMass_relSE"] / 3.0
+    return out
+
+
+def sphere_diameter_nm(mass, density, mass_unit):
+    """The diameter [nm] of spheres of mass [mass units] and density [kg/m3]."""
+    return 1e9 * np.cbrt(6.0 * np.asarray(mass, float) * mass_unit / (np.pi * density))
 
 
 def split_invalid(tri, finite):
@@ -250,7 +264,9 @@ def polygon_outline(polygons):
 LABELS = {"M0": "M0 [1/m³]", "M1": "M1 [mass unit/m³]", "meanMass": "M1/M0 [mass unit]",
           "M0_relSE": "relative standard error of M0",
           "M1_relSE": "relative standard error of M1",
-          "meanMass_relSE": "relative standard error of M1/M0"}
+          "meanMass_relSE": "relative standard error of M1/M0",
+          "meanDiameter": "diameter of the mean mass [nm]",
+          "meanDiameter_relSE": "relative standard error of that diameter"}
 
 
 def _draw(vals, a, b, polygons, tri, title, png):
@@ -269,18 +285,20 @@ def _draw(vals, a, b, polygons, tri, title, png):
     names = "xyz"
     plt = _pyplot()
     span = np.ptp(u) / max(np.ptp(v), 1e-300)
+    # the third quantity: the mean particle's diameter where the material is known
+    third = "meanDiameter" if "meanDiameter" in vals else "meanMass"
     if span > 6:
         # a very long domain (a channel): one panel a row, the quantity above its error
-        order = ("M0", "M0_relSE", "M1", "M1_relSE", "meanMass", "meanMass_relSE")
+        order = ("M0", "M0_relSE", "M1", "M1_relSE", third, third + "_relSE")
         fig, axes = plt.subplots(6, 1, figsize=(14, 6 * (11.0 / span + 0.9) + 0.6),
                                  squeeze=False)
     elif span > 3:
         # a long domain (a channel, a step): a quantity and its error side by side, in rows
-        order = ("M0", "M0_relSE", "M1", "M1_relSE", "meanMass", "meanMass_relSE")
+        order = ("M0", "M0_relSE", "M1", "M1_relSE", third, third + "_relSE")
         fig, axes = plt.subplots(3, 2, figsize=(15, 3 * max(1.6, 7.0 / span) + 1.5),
                                  squeeze=False)
     else:
-        order = QUANTITIES
+        order = ("M0", "M1", third, "M0_relSE", "M1_relSE", third + "_relSE")
         fig, axes = plt.subplots(2, 3, figsize=(15, 2 * max(2.2, min(5.0, 4.6 / span)) + 1.2),
                                  squeeze=False)
     ranges = {}
@@ -324,30 +342,32 @@ def _draw(vals, a, b, polygons, tri, title, png):
 
 def _write_cells(path, notes, rows, centres, vals):
     """The CSV of a map: the notes as '# ' lines, then each row's cell (the report's index),
-    centre and plotted values."""
+    centre and values (QUANTITIES, and DIAMETER where there are)."""
+    names = [q for q in QUANTITIES + DIAMETER if q in vals]
     with open(path, "w") as f:
         for note in notes:
             f.write("# %s\n" % note)
-        f.write("cell,x,y,z," + ",".join(QUANTITIES) + "\n")
+        f.write("cell,x,y,z," + ",".join(names) + "\n")
         for i in rows:
             f.write("%d,%.12g,%.12g,%.12g," % (i, *centres[i])
-                    + ",".join("%.12g" % vals[q][i] for q in QUANTITIES) + "\n")
+                    + ",".join("%.12g" % vals[q][i] for q in names) + "\n")
 
 
 def _ranges_note(ranges):
-    return "colour ranges: %s" % ", ".join("%s %.12g %.12g" % (q, *ranges[q])
-                                           for q in QUANTITIES)
+    return "colour ranges: %s" % ", ".join("%s %.12g %.12g" % (q, *r) for q, r in ranges.items())
 
 
-def map_figure(res, out, title="", case=None):
+def map_figure(res, out, title="", case=None, material=None):
     """maps.png and maps.csv of a two-dimensional report (see the module's text): each
     cell's polygon in its colour where the case's mesh gives them (cell_polygons), else the
-    values at the centres, linear in the triangles between them; returns their paths."""
+    values at the centres, linear in the triangles between them; with material (density,
+    kg per mass unit) the diameter of the mean mass in place of the mean mass; returns
+    their paths."""
     centres = np.asarray(res["centres"], float)
     a, b = plane(centres)
     polygons = cell_polygons(case, centres) if case else None
     tri = None if polygons is not None else triangulation(centres[:, a], centres[:, b])
-    vals = values(res)
+    vals = values(res, material)
     os.makedirs(out, exist_ok=True)
     png = os.path.join(out, "maps.png")
     ranges = _draw(vals, a, b, polygons, tri, "Time-averaged moments per cell%s"
@@ -367,7 +387,7 @@ def _rows(mesh, cell_of_row, cells):
     return row_of_cell[cells]
 
 
-def slice_figure(res, out, mesh, cell_of_row, axis, value, title=""):
+def slice_figure(res, out, mesh, cell_of_row, axis, value, title="", material=None):
     """slice_<axis><value>.png and .csv: the maps of map_figure on the cells the plane
     x[axis] = value cuts, each drawn as its cut (sections.slice_polygons); cell_of_row the
     mesh cell of each of the report's rows (sections.match_cells). ValueError where the
@@ -381,8 +401,8 @@ def slice_figure(res, out, mesh, cell_of_row, axis, value, title=""):
         raise ValueError("the plane %s = %g does not cut the mesh (%s from %g to %g)"
                          % (name, value, name, lo, hi))
     rows = _rows(mesh, cell_of_row, cells)
-    vals = values(res)
-    sub = {q: vals[q][rows] for q in QUANTITIES}
+    vals = values(res, material)
+    sub = {q: v[rows] for q, v in vals.items()}
     a, b = [k for k in range(3) if k != axis]
     os.makedirs(out, exist_ok=True)
     stem = os.path.join(out, "slice_%s%g" % (name, value))
@@ -395,11 +415,13 @@ def slice_figure(res, out, mesh, cell_of_row, axis, value, title=""):
     return [stem + ".png", stem + ".csv"]
 
 
-def line_figure(res, out, mesh, cell_of_row, p0, p1, name, title=""):
+def line_figure(res, out, mesh, cell_of_row, p0, p1, name, title="", material=None):
     """<name>.png and <name>.csv: the time-averaged M0, M1 and M1/M0 of each cell the
     segment p0 p1 crosses (sections.line_cells), against the distance along it from p0: a
-    step per cell from its entry to its exit, with the 95 % interval as a band. ValueError
-    where the segment misses the mesh."""
+    step per cell from its entry to its exit, with the 95 % interval as a band; with
+    material (density, kg per mass unit) the diameter of the mean mass [nm] in place of the
+    mean mass, its interval a third of the mass's relative one. ValueError where the segment
+    misses the mesh."""
     from . import sections
     from .plots import _pyplot
 
@@ -412,8 +434,11 @@ def line_figure(res, out, mesh, cell_of_row, p0, p1, name, title=""):
     length = np.linalg.norm(p1 - p0)
     s_in, s_out = t_in * length, t_out * length
     mean, ci = res["mean"][rows], res["ci"][rows]
-    columns = (("M0", mean[:, 0], ci[:, 0]), ("M1", mean[:, 1], ci[:, 1]),
-               ("meanMass", res["meanMass"][rows], res["meanMassCi"][rows]))
+    third = ("meanMass", res["meanMass"][rows], res["meanMassCi"][rows])
+    if material:
+        d = sphere_diameter_nm(third[1], *material)
+        third = ("meanDiameter", d, d * third[2] / (3.0 * third[1]))
+    columns = (("M0", mean[:, 0], ci[:, 0]), ("M1", mean[:, 1], ci[:, 1]), third)
     plt = _pyplot()
     fig, axes = plt.subplots(1, 3, figsize=(15, 4), squeeze=False)
     x = np.column_stack([s_in, s_out]).ravel()

@@ -167,6 +167,8 @@ def compute(cases, t_relax=None, t_end=None, u=None, x_inlet=0.0, analytic_kind=
         "u": u if u is not None else num("u", 1.0),
         "xInlet": x_inlet,
         "realisations": len(runs),
+        "density": num("density"),
+        "massUnit": num("massUnit"),
         "interval": interval,
         "runs": runs,
     }

@@ -1085,6 +1085,16 @@ BUGS = {
              '"meanMass_relSE": res["meanMassCi"] / res["meanMass"]',
              "python_unit",
              "maps: the mean mass's relative error from its half-width"),
+    "B200": ("src/python/coagulationPost/maps.py",
+             "    return 1e9 * np.cbrt(6.0 * np.asarray(mass, float) * mass_unit / (np.pi * density))",
+             "    return 1e9 * np.cbrt(np.asarray(mass, float) * mass_unit / density)",
+             "python_unit|case_pitzDaily",
+             "maps: the diameter of a cube of the mean mass"),
+    "B201": (M + "cloudFunctions/momentSampler/momentSampler.C",
+             '        writer_->setAttribute("density", material.density);\n',
+             "",
+             "case_pitzDaily",
+             "moment samples: the particles' density not written"),
 }
 
 

@@ -7,6 +7,7 @@
 
 #include "momentSampler.H"
 #include "coagulationCloud.H"
+#include "particleMaterial.H"
 #include "fvMesh.H"
 #include "OSspecific.H"
 #include "caseChecks.H"
@@ -162,6 +163,14 @@ void Foam::coagulation::cloudFunctions::momentSampler::setAttributes
     (
         "kernel", cloud.properties().subDict("kernel").get<word>("type")
     );
+    // The particles' material, when the case gives one: the report's diameters
+    if (cloud.properties().found("particles"))
+    {
+        const coag::ParticleMaterial material =
+            readParticleMaterial(cloud.properties(), "moment samples");
+        writer_->setAttribute("density", material.density);
+        writer_->setAttribute("massUnit", material.massUnit);
+    }
 }
 
 
