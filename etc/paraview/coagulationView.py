@@ -60,7 +60,8 @@ def parse(argv):
                    help="the picture's pixels, WxH, or W alone (default: 1600 wide; the "
                         "height the domain needs)")
     p.add_argument("--slice", choices=("x", "y", "z"), default=None,
-                   help="3-D: the slice's normal (default: the domain's thinnest axis)")
+                   help="the slice's normal (default: a 3-D mesh's thinnest axis; a 2-D mesh is seen "
+                        "face on unless this is given)")
     # in ParaView's window the arguments are ParaView's own: ignore what is not ours
     return p.parse_known_args(argv)[0]
 
@@ -76,8 +77,6 @@ def main(argv):
     cloud = args.cloud or "*"
     cloud_file, t_cloud = series(os.path.join(vtk, "lagrangian", cloud, "*.vtp.series"))
 
-    scene = GetAnimationScene()
-    scene.UpdateAnimationUsingDataTimeSteps()
     time = max(t for t in (t_mesh, t_cloud) if t is not None)
 
     # the cells: the internal mesh only (the patches would hide a 3-D interior)
@@ -92,12 +91,15 @@ def main(argv):
     centre = [0.5 * (bounds[2 * k] + bounds[2 * k + 1]) for k in range(3)]
     # of extents equal to round-off the last axis, as coagulationReport's default slice
     thin = max(range(3), key=lambda k: (-round(extent[k] / max(max(extent), 1e-300), 6), k))
-    if extent[thin] >= 0.05 * max(extent):
-        # three-dimensional: a slice through the middle
+    if args.slice or extent[thin] >= 0.05 * max(extent):
+        # three-dimensional (or a slice asked for): a slice through the middle, just below
+        # it, in the cells below a layer of faces there (as the report's default slice)
         thin = "xyz".index(args.slice) if args.slice else thin
+        origin = list(centre)
+        origin[thin] -= 1e-6 * max(extent)
         cut = Slice(Input=cells)
         cut.SliceType = "Plane"
-        cut.SliceType.Origin = centre
+        cut.SliceType.Origin = origin
         cut.SliceType.Normal = [1.0 if k == thin else 0.0 for k in range(3)]
         cells = cut
     # the picture's axes: the slice's two others, the vertical one z unless it is the normal
@@ -172,6 +174,10 @@ def main(argv):
         position[up] -= 0.5 * BAR / k
         view.CameraPosition = position
         view.CameraFocalPoint = [position[j] if j != thin else centre[j] for j in range(3)]
+    # the time shown, also in ParaView's window (its time controls follow the scene)
+    scene = GetAnimationScene()
+    scene.UpdateAnimationUsingDataTimeSteps()
+    scene.AnimationTime = time
     if args.png:
         os.makedirs(os.path.dirname(os.path.abspath(args.png)), exist_ok=True)
         SaveScreenshot(args.png, layout, SaveAllViews=1, ImageResolution=[w, h],

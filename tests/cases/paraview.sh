@@ -21,7 +21,7 @@ shortCase()
 
 c=$(newCase constantKernelDuct paraview_box)
 cd "$c"
-sed -i 's/(50 1 1)/(20 5 5)/; s/^h       0.004;/h       0.05;/; s/type empty;/type wall;/' \
+sed -i 's/(50 1 1)/(20 6 6)/; s/^h       0.004;/h       0.05;/; s/type empty;/type wall;/' \
     system/blockMeshDict
 sed -i 's/type            empty;/type            slip;/' 0/U
 rm -f log.blockMesh && runApplication blockMesh

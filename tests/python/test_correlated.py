@@ -142,6 +142,18 @@ def test_report_interval_and_columns(tmp_path):
     print("report: 4 realisations coverage %.3f" % cover4)
     assert 0.90 <= cover4 <= 0.99
     assert "4 realisations" in pooled["meta"]["interval"]
+    # the mean mass M1/M0 (true value 1) and its interval, in the cells' order: one run's
+    # from its samples, the realisations' from their ratios
+    for r in [res, pooled]:
+        np.testing.assert_allclose(r["meanMass"], r["mean"][:, 1] / r["mean"][:, 0], rtol=1e-12)
+    np.testing.assert_allclose(
+        pooled["meanMassCi"],
+        st.standard_error_from_realisations(np.array([one["meanMass"] for one in singles]))[1],
+        rtol=1e-10)
+    for r, name in ((res, "one run"), (pooled, "4 realisations")):
+        cover = np.mean(np.abs(r["meanMass"] - 1) <= r["meanMassCi"])
+        print("report: mean mass, %s: coverage %.3f" % (name, cover))
+        assert 0.90 <= cover <= 0.99
 
 
 def test_min_window_sees_a_weak_slow_tail():

@@ -56,8 +56,8 @@ def test_map_figure_writes_the_cells_values_and_ranges(tmp_path):
     assert "triangles between the centres" in open(csv).readlines()[1]
     assert np.allclose(rows["M0"], mean[:, 0]) and np.allclose(rows["M1"], mean[:, 1])
     assert np.allclose(rows["meanMass"], mean[:, 1] / mean[:, 0])
-    assert np.allclose(rows["M0_relSE"], 0.02 / 1.96)
-    assert np.allclose(rows["meanMass_relSE"], 0.01 / 1.96)
+    assert np.allclose(rows["M0_relCI95"], 0.02)
+    assert np.allclose(rows["meanMass_relCI95"], 0.01)
     # the colour range of each panel is its values' range
     ranges = dict((q, (float(a), float(b))) for q, a, b in
                   (part.split() for part in head.split(":", 1)[1].split(",")))

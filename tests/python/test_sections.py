@@ -126,9 +126,13 @@ def test_slice_on_a_node_plane_and_outside(tmp_path):
     # the layer below the plane, each column once
     assert np.array_equal(cells, np.arange(12, 24))
     assert abs(sum(_area(p) for p in polys) / (np.ptp(X) * np.ptp(Y)) - 1) < 1e-12
-    for value in (Z[0] - 0.1, Z[-1] + 0.1, Z[0]):
+    for value in (Z[0] - 0.1, Z[-1] + 0.1):
         cells, polys = sections.slice_polygons(mesh, 2, value)
         assert len(cells) == 0 and polys == []
+    # on the lowest boundary: the lowest layer, each column once
+    cells, polys = sections.slice_polygons(mesh, 2, Z[0])
+    assert np.array_equal(cells, np.arange(12))
+    assert abs(sum(_area(p) for p in polys) / (np.ptp(X) * np.ptp(Y)) - 1) < 1e-12
 
 
 @pytest.mark.parametrize("axis, value, shear, area", [
@@ -247,7 +251,7 @@ def test_slice_figure_writes_the_cut_cells_values(tmp_path):
     r = rows["cell"].astype(int)
     assert np.allclose(rows["x"], res["centres"][r, 0])
     assert np.allclose(rows["M0"], res["mean"][r, 0]) and np.allclose(rows["M1"], res["mean"][r, 1])
-    assert np.allclose(rows["M1_relSE"], 0.1 / 1.96)
+    assert np.allclose(rows["M1_relCI95"], 0.1)
     # the colour ranges are those of the slice's cells only
     head = open(csv).readline()
     ranges = dict((q, (float(a), float(b))) for q, a, b in
@@ -310,7 +314,7 @@ def test_figures_in_diameter_with_a_material(tmp_path):
     m = rows["meanMass"]
     d = 1e9 * (6 * m * 9.42e-22 / (np.pi * 1800.0)) ** (1 / 3)
     assert np.allclose(rows["meanDiameter"], d) and np.all((d > 10) & (d < 20))
-    assert np.allclose(rows["meanDiameter_relSE"], 0.07 / 1.96 / 3)
+    assert np.allclose(rows["meanDiameter_relCI95"], 0.07 / 3)
     assert "meanDiameter" in open(csv).readline()            # drawn: in the colour ranges
     png, csv = maps.line_figure(res, str(tmp_path / "out"), mesh, cell_of_row,
                                 [-0.1, 0.02, 1.2], [0.8, 0.02, 1.2], "line1", material=material)
@@ -319,3 +323,15 @@ def test_figures_in_diameter_with_a_material(tmp_path):
     d = 1e9 * (6 * res["meanMass"][r] * 9.42e-22 / (np.pi * 1800.0)) ** (1 / 3)
     assert np.allclose(rows["meanDiameter"], d)
     assert np.allclose(rows["meanDiameter_ci95"], d * 0.07 / 3)
+
+
+def test_steps_break_where_the_line_leaves_the_mesh():
+    """A step per cell; where the next cell starts after this one ends (the segment left the
+    mesh and came back), a break (NaN), and none between cells that touch."""
+    from coagulationPost import maps
+
+    x, y = maps.steps([0.0, 1.0, 3.0], [1.0, 2.0, 4.0], [5.0, 6.0, 7.0])
+    assert np.array_equal(x[[0, 1, 3, 4, 6, 7]], [0, 1, 1, 2, 3, 4])
+    assert np.array_equal(y[[0, 1, 3, 4, 6, 7]], [5, 5, 6, 6, 7, 7])
+    assert x[2] == 1.0 and y[2] == 5.0                  # cells 0 and 1 touch: joined
+    assert np.isnan(x[5]) and np.isnan(y[5])            # 2 .. 3: no cell, a break

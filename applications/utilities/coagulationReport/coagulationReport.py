@@ -44,6 +44,7 @@ Examples:
 
 import argparse
 import os
+import re
 import sys
 
 # the post-processing package, <repo>/src/python/coagulationPost (PYTHONPATH: etc/bashrc)
@@ -133,12 +134,27 @@ def parse_args(argv):
     g.add_argument("--check-psd-m0", action="store_true",
                    help="check the PSD's sum against M0 of the probe's cell (moment samples), and "
                         "the solver's CSV averages against the samples")
+    # a point of --line that starts with a minus (-0.1,0,0) is a value, not an option
+    argv = list(argv)
+    for i, token in enumerate(argv):
+        if token == "--line":
+            for j in (i + 1, i + 2):
+                if j < len(argv) and re.match(r"-[\d.]", argv[j]):
+                    argv[j] = " " + argv[j]
     args = p.parse_args(argv)
     try:
         args.slices = [parse_slice(t) for t in args.slice]
         args.lines = [(parse_point(a), parse_point(b)) for a, b in args.line]
     except ValueError as e:
         p.error(str(e))
+    if args.no_plots and (args.slices or args.lines):
+        p.error("--slice and --line draw pictures: not with --no-plots")
+    stems = ["%s%g" % ("xyz"[a], v) for a, v in args.slices]
+    if len(set(stems)) != len(stems):
+        p.error("--slice: a plane given twice (%s)" % ", ".join(stems))
+    for a, b in args.lines:
+        if a == b:
+            p.error("--line: the two points are the same (%g %g %g)" % tuple(a))
     if args.check_skip_cells < 0:
         p.error("--check-skip-cells must be >= 0")
     if args.check_rel_tol <= 0:
@@ -234,8 +250,12 @@ def report_sections(args, res, out, dims):
         return []
     cell_of_row = sections.match_cells(mesh, centres)
     if cell_of_row is None:
-        raise InputError("the cells of %s/constant/polyMesh (%d) do not match the samples' "
-                         "%d cell centres" % (case, mesh["nCells"], len(centres)))
+        msg = ("the cells of %s/constant/polyMesh (%d) do not match the samples' %d cell "
+               "centres" % (case, mesh["nCells"], len(centres)))
+        if asked:
+            raise InputError(msg)
+        print("%s: no maps (moments_full.csv has every cell's)" % msg)
+        return []
     title = os.path.basename(os.path.abspath(case))
     written = []
     try:

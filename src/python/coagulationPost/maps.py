@@ -13,7 +13,7 @@ cell_polygons(case, c)    each cell's polygon on the mesh's plane, from constant
                           (ASCII or binary): its face on the 'empty' patch of the smaller
                           coordinate
 map_figure(res, out)      maps.png: the means of M0, M1 and the mean mass M1/M0 (top row) and
-                          their relative standard errors (ci95/1.96 over the mean; bottom row),
+                          their relative 95 % half-widths (ci95 over the mean; bottom row),
                           each cell's polygon in its colour (or, without the mesh, the values
                           at the centres, linear in the triangles between them), the domain's
                           outline; maps.csv beside it holds every cell's plotted values and
@@ -35,9 +35,9 @@ import re
 
 import numpy as np
 
-QUANTITIES = ("M0", "M1", "meanMass", "M0_relSE", "M1_relSE", "meanMass_relSE")
+QUANTITIES = ("M0", "M1", "meanMass", "M0_relCI95", "M1_relCI95", "meanMass_relCI95")
 # with the particles' material: the diameter of the mean mass
-DIAMETER = ("meanDiameter", "meanDiameter_relSE")
+DIAMETER = ("meanDiameter", "meanDiameter_relCI95")
 
 
 def dimension(centres, rel_tol=1e-9):
@@ -199,31 +199,27 @@ def cell_polygons(case, centres):
 
 def values(res, material=None):
     """Every cell's plotted values: {quantity: array} of QUANTITIES. The mean mass where
-    M0 > 0 and its relative error from the report's interval of it (report.compute's
-    meanMass and meanMassCi: the ratio's own interval, with the covariance of M0 and M1).
-    With material = (density [kg/m3], kg per mass unit) also DIAMETER: the diameter of a
-    sphere of the mean mass [nm], d = (6 m / (pi rho))^(1/3), and its relative error, a
-    third of the mass's (to first order)."""
+    M0 > 0; the relative 95 % half-widths, the report's intervals over the means (one run's
+    from its correlated samples, or the realisations'), the mean mass's its own
+    (report.compute's meanMassCi: with the covariance of M0 and M1). With material =
+    (density [kg/m3], kg per mass unit) also DIAMETER: the diameter of a sphere of the mean
+    mass [nm] and its relative half-width, a third of the mass's (to first order)."""
+    from .psd import sphere_diameter
+
     mean, ci = res["mean"], res["ci"]
-    se = ci / 1.96
     with np.errstate(invalid="ignore", divide="ignore"):
         out = {
             "M0": mean[:, 0],
             "M1": mean[:, 1],
             "meanMass": res["meanMass"],
-            "M0_relSE": se[:, 0] / mean[:, 0],
-            "M1_relSE": se[:, 1] / mean[:, 1],
-            "meanMass_relSE": res["meanMassCi"] / 1.96 / res["meanMass"],
+            "M0_relCI95": ci[:, 0] / mean[:, 0],
+            "M1_relCI95": ci[:, 1] / mean[:, 1],
+            "meanMass_relCI95": res["meanMassCi"] / res["meanMass"],
         }
     if material:
-        out["meanDiameter"] = sphere_diameter_nm(out["meanMass"], *material)
-        out["meanDiameter_relSE"] = out["meanMass_relSE"] / 3.0
+        out["meanDiameter"] = 1e9 * sphere_diameter(out["meanMass"], *material)
+        out["meanDiameter_relCI95"] = out["meanMass_relCI95"] / 3.0
     return out
-
-
-def sphere_diameter_nm(mass, density, mass_unit):
-    """The diameter [nm] of spheres of mass [mass units] and density [kg/m3]."""
-    return 1e9 * np.cbrt(6.0 * np.asarray(mass, float) * mass_unit / (np.pi * density))
 
 
 def split_invalid(tri, finite):
@@ -262,11 +258,11 @@ def polygon_outline(polygons):
 
 
 LABELS = {"M0": "M0 [1/m³]", "M1": "M1 [mass unit/m³]", "meanMass": "M1/M0 [mass unit]",
-          "M0_relSE": "relative standard error of M0",
-          "M1_relSE": "relative standard error of M1",
-          "meanMass_relSE": "relative standard error of M1/M0",
+          "M0_relCI95": "M0's 95 % half-width / M0",
+          "M1_relCI95": "M1's 95 % half-width / M1",
+          "meanMass_relCI95": "M1/M0's 95 % half-width / M1/M0",
           "meanDiameter": "diameter of the mean mass [nm]",
-          "meanDiameter_relSE": "relative standard error of that diameter"}
+          "meanDiameter_relCI95": "its 95 % half-width / diameter"}
 
 
 def _draw(vals, a, b, polygons, tri, title, png):
@@ -289,16 +285,16 @@ def _draw(vals, a, b, polygons, tri, title, png):
     third = "meanDiameter" if "meanDiameter" in vals else "meanMass"
     if span > 6:
         # a very long domain (a channel): one panel a row, the quantity above its error
-        order = ("M0", "M0_relSE", "M1", "M1_relSE", third, third + "_relSE")
+        order = ("M0", "M0_relCI95", "M1", "M1_relCI95", third, third + "_relCI95")
         fig, axes = plt.subplots(6, 1, figsize=(14, 6 * (11.0 / span + 0.9) + 0.6),
                                  squeeze=False)
     elif span > 3:
         # a long domain (a channel, a step): a quantity and its error side by side, in rows
-        order = ("M0", "M0_relSE", "M1", "M1_relSE", third, third + "_relSE")
+        order = ("M0", "M0_relCI95", "M1", "M1_relCI95", third, third + "_relCI95")
         fig, axes = plt.subplots(3, 2, figsize=(15, 3 * max(1.6, 7.0 / span) + 1.5),
                                  squeeze=False)
     else:
-        order = ("M0", "M1", third, "M0_relSE", "M1_relSE", third + "_relSE")
+        order = ("M0", "M1", third, "M0_relCI95", "M1_relCI95", third + "_relCI95")
         fig, axes = plt.subplots(2, 3, figsize=(15, 2 * max(2.2, min(5.0, 4.6 / span)) + 1.2),
                                  squeeze=False)
     ranges = {}
@@ -415,6 +411,19 @@ def slice_figure(res, out, mesh, cell_of_row, axis, value, title="", material=No
     return [stem + ".png", stem + ".csv"]
 
 
+def steps(s_in, s_out, *values):
+    """The arrays that draw each cell's values as a step from its entry to its exit: x and
+    each of values, three points a cell (entry, exit, and NaN after a cell the next does not
+    start at: a break where the segment leaves the mesh and comes back)."""
+    s_in, s_out = np.asarray(s_in, float), np.asarray(s_out, float)
+    tol = 1e-9 * max(float(np.max(s_out)) if len(s_out) else 0.0, 1e-300)
+    gap = np.append(s_in[1:] > s_out[:-1] + tol, False)
+
+    def three(a, b):
+        return np.column_stack([a, b, np.where(gap, np.nan, b)]).ravel()
+    return (three(s_in, s_out),) + tuple(three(v, v) for v in values)
+
+
 def line_figure(res, out, mesh, cell_of_row, p0, p1, name, title="", material=None):
     """<name>.png and <name>.csv: the time-averaged M0, M1 and M1/M0 of each cell the
     segment p0 p1 crosses (sections.line_cells), against the distance along it from p0: a
@@ -436,14 +445,14 @@ def line_figure(res, out, mesh, cell_of_row, p0, p1, name, title="", material=No
     mean, ci = res["mean"][rows], res["ci"][rows]
     third = ("meanMass", res["meanMass"][rows], res["meanMassCi"][rows])
     if material:
-        d = sphere_diameter_nm(third[1], *material)
+        from .psd import sphere_diameter
+        d = 1e9 * sphere_diameter(third[1], *material)
         third = ("meanDiameter", d, d * third[2] / (3.0 * third[1]))
     columns = (("M0", mean[:, 0], ci[:, 0]), ("M1", mean[:, 1], ci[:, 1]), third)
     plt = _pyplot()
     fig, axes = plt.subplots(1, 3, figsize=(15, 4), squeeze=False)
-    x = np.column_stack([s_in, s_out]).ravel()
     for (q, m, c), ax in zip(columns, axes.ravel()):
-        y, e = np.repeat(m, 2), np.repeat(c, 2)
+        x, y, e = steps(s_in, s_out, m, c)
         ax.fill_between(x, y - e, y + e, color="C0", alpha=0.25, linewidth=0,
                         label="95 % interval")
         ax.plot(x, y, color="C0", lw=1.2, label="cell mean")

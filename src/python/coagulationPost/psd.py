@@ -337,8 +337,14 @@ def diameter_bins(psd, density, mass_unit):
         centre, lower, upper = np.sqrt(e[1:B + 1] * e[:B]), e[:B], e[1:B + 1]
 
     def d(m):
-        return (6.0 * np.asarray(m, float) * mass_unit / (np.pi * density)) ** (1.0 / 3.0)
+        return sphere_diameter(m, density, mass_unit)
     return d(centre), d(lower), d(upper), np.log10(upper / lower) / 3.0
+
+
+def sphere_diameter(mass, density, mass_unit):
+    """The diameter [m] of spheres of mass [mass units of mass_unit kg] and density
+    [kg/m3]: (6 m / (pi rho))^(1/3)."""
+    return np.cbrt(6.0 * np.asarray(mass, float) * mass_unit / (np.pi * density))
 
 
 def size_statistics(d, n, lower=None, upper=None):

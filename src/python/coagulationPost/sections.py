@@ -109,8 +109,9 @@ def slice_polygons(mesh, axis, value):
 
     The vertices are the points where the cell's faces' edges cross the plane. A point
     with x[axis] - value >= 0 counts as above it, so that a plane on a layer of faces cuts
-    the cells below them (their top faces) only, neither losing nor doubling them; a point
-    within 1e-9 of the mesh's size of the plane is on it."""
+    the cells below them (their top faces) only, neither losing nor doubling them, and a
+    plane on the mesh's lowest boundary cuts the cells above it; a point within 1e-9 of the
+    mesh's size of the plane is on it."""
     if axis not in (0, 1, 2):
         raise ValueError("axis %r is not 0, 1 or 2" % (axis,))
     pts = mesh["points"]
@@ -120,6 +121,9 @@ def slice_polygons(mesh, axis, value):
     # a point within round-off of the plane is on it: blockMesh's points on a layer of
     # faces scatter by an ulp about the value given
     tol = 1e-9 * max(np.ptp(pts, axis=0).max() if len(pts) else 0.0, 1e-300)
+    if len(pts) and abs(value - pts[:, axis].min()) <= tol:
+        # the mesh's lowest boundary: the cells above it (none lies below)
+        value = pts[:, axis].min() + 2.0 * tol
     s = pts[:, axis] - value
     s[np.abs(s) <= tol] = 0.0
     above = s >= 0
