@@ -6,7 +6,7 @@ VTK/lagrangian/<cloud>/<cloud>.vtp.series) at the latest time: the cells coloure
 moment field (M0 by default) and the particles as Point Gaussian splats coloured by their
 mass on a log scale.  A two-dimensional mesh (one cell thick) is seen face on; a
 three-dimensional one as a slice through the middle of the domain across its thinnest
-extent, with the particles around it.
+extent (--slice: across that axis, on any mesh), with the particles around it.
 
   pvbatch coagulationView.py [--case DIR] [--png FILE] [--field M0] [--cloud NAME]
                              [--size 1600x900 | 1600] [--slice x|y|z]
@@ -101,6 +101,10 @@ def main(argv):
         cut.SliceType = "Plane"
         cut.SliceType.Origin = origin
         cut.SliceType.Normal = [1.0 if k == thin else 0.0 for k in range(3)]
+        cut.Triangulatetheslice = 0      # a polygon a cell
+        cut.UpdatePipeline(time)
+        print("coagulationView: the slice %s = %.6g through %d cells"
+              % ("xyz"[thin], centre[thin], cut.GetDataInformation().GetNumberOfCells()))
         cells = cut
     # the picture's axes: the slice's two others, the vertical one z unless it is the normal
     up = 2 if thin != 2 else 1

@@ -1,14 +1,14 @@
 #!/bin/bash
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 # ParaView's picture of a case (etc/paraview/coagulationView.py under pvbatch): a 3-D box (the
-# slice through its middle) and the 1-D duct (seen face on), each from a short run and
-# foamToVTK. In each picture the cells' view shows the domain filled with M0's colours
+# slice through its middle, one layer of cells where the middle is a layer of faces) and the
+# 1-D duct (seen face on; sliced across when asked), each from a short run and foamToVTK. In each picture the cells' view shows the domain filled with M0's colours
 # (viridis) and the particles' view shows the particles' splats (inferno) inside it; a case
 # without VTK files and an unknown field are refused (exit 2). Skipped (exit 77) where
 # pvbatch, or a display or xvfb-run, is missing.
 . "$(dirname "$0")/caseLib.sh"
 
-pv=$(paraViewCommand) || { echo "pvbatch or xvfb-run not found: skipped"; exit 77; }
+pv=$(paraViewCommand) || { echo "ParaView cannot run here: skipped"; exit 77; }
 script="$COAGULATIONFOAM_DIR/etc/paraview/coagulationView.py"
 
 # shortCase dir: the duct's inputs for 100 steps of 1e-3 s, one write
@@ -30,6 +30,9 @@ runApplication coagulationFoam
 runApplication foamToVTK -latestTime
 runParaView box.png --size 1200x800
 box=$c/box.png
+# the slice through the middle of the box's 6 layers, on a layer of faces: one layer's cells
+grep -q "the slice z = 0.025 through 120 cells" log.paraView \
+    || { cat log.paraView; fail "the box's slice is not one layer of 120 cells"; }
 
 c=$(newCase constantKernelDuct paraview_duct)
 cd "$c"
@@ -38,6 +41,9 @@ runApplication coagulationFoam
 runApplication foamToVTK -latestTime
 runParaView duct.png --size 1200x800
 duct=$c/duct.png
+# a slice asked for on a mesh one cell thick: across it, through its 50 cells
+paraViewRun "$pv" "$script" --case . --png ductY.png --slice y > log.slice 2>&1 || { cat log.slice; fail "--slice y"; }
+grep -q "the slice y = 0.002 through 50 cells" log.slice || { cat log.slice; fail "the duct's slice"; }
 
 # the domain's pixels in each view: the picture is the two views stacked (both domains are
 # long), each the domain above its colour bar's 200 pixels, scaled to fit 90 % of the view
@@ -76,12 +82,12 @@ PY
 # refused: a case without VTK files, a field the series does not have
 mkdir -p "$workDir/paraview_empty"
 set +e
-(cd "$workDir/paraview_empty" && $pv "$script" --case . --png x.png) > err.log 2>&1
+(cd "$workDir/paraview_empty" && paraViewRun "$pv" "$script" --case . --png x.png) > err.log 2>&1
 rc=$?
 set -e
 [ "$rc" = 2 ] && grep -q "run foamToVTK first" err.log || { cat err.log; fail "no VTK: exit $rc"; }
 set +e
-$pv "$script" --case . --field M7 --png y.png > err.log 2>&1
+paraViewRun "$pv" "$script" --case . --field M7 --png y.png > err.log 2>&1
 rc=$?
 set -e
 [ "$rc" = 2 ] && grep -q "no cell field M7" err.log || { cat err.log; fail "unknown field: exit $rc"; }

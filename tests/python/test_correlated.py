@@ -91,12 +91,13 @@ ATTRS = dict(n=256, V1=1e-3, K0=1e-5, inceptionRate=3e8, seed=7, splitDeltaT=1e-
              sampleInterval=0.01, tRelax=0.0, algorithm="SWA", kernel="constant")
 
 
-def write_case(case, x, seed):
+def write_case(case, x, seed, centres=None):
     d = os.path.join(str(case), samples.SAMPLE_DIR)
     os.makedirs(d, exist_ok=True)
     nc = x.shape[1]
     with h5py.File(os.path.join(d, "s.h5"), "w") as f:
-        f["cellCentres"] = np.stack([np.arange(nc) + 0.5, np.zeros(nc), np.zeros(nc)], 1)
+        f["cellCentres"] = (np.stack([np.arange(nc) + 0.5, np.zeros(nc), np.zeros(nc)], 1)
+                            if centres is None else centres)
         f["time"] = np.arange(len(x)) * 0.01
         f["moments"] = x
         for k, v in {**ATTRS, "seed": seed}.items():
@@ -205,3 +206,35 @@ def test_mean_mass_interval_covers_the_ratio():
     exact = np.stack([m0, R * m0], axis=2)[:, :5]
     mean, _, _, _ = st.correlated_interval_masked(exact)
     assert np.allclose(report.mean_mass_interval(exact, mean, 0)[1], 0.0, atol=1e-12)
+
+
+def test_report_mean_mass_per_cell_in_the_cells_order(tmp_path):
+    """The report's mean mass and its interval belong to their cells: 60 cells written in a
+    shuffled order, each with its own M1/M0 (1 + x/20); one run's interval is that of the
+    cell's own samples (mean_mass_interval on the file's columns, window 0), three
+    realisations' the t-interval of their ratios."""
+    rng = np.random.default_rng(5)
+    nc, n = 60, 400
+    x_of = rng.permutation(nc) + 0.5                     # the file's cell j sits at x_of[j]
+    centres = np.stack([x_of, np.zeros(nc), np.zeros(nc)], 1)
+    runs, data = [], []
+    for r in range(3):
+        m0 = 100.0 + 5.0 * ar1(rng, phi_of(3.0), n, nc)
+        m1 = (1 + x_of / 20) * m0 + ar1(rng, phi_of(3.0), n, nc)
+        x = np.stack([m0, m1, m0, m0], axis=2)
+        data.append(x)
+        runs.append(str(tmp_path / ("run%d" % r)))
+        write_case(runs[-1], x, 30 + r, centres)
+    one = report.compute(runs[:1], analytic_kind="none", correlation_time=0)
+    order = np.argsort(x_of)                             # the report's rows: by x
+    np.testing.assert_allclose(one["centres"][:, 0], x_of[order])
+    mean, _, _, _ = st.correlated_interval_masked(data[0])
+    ratio, ci = report.mean_mass_interval(data[0], mean, 0)
+    np.testing.assert_allclose(one["meanMass"], ratio[order], rtol=1e-12)
+    np.testing.assert_allclose(one["meanMassCi"], ci[order], rtol=1e-9)
+    assert np.all(np.abs(one["meanMass"] - (1 + one["centres"][:, 0] / 20)) < 0.05)
+    pooled = report.compute(runs, analytic_kind="none", correlation_time=0)
+    ratios = np.array([report.mean_mass_interval(d, st.correlated_interval_masked(d)[0], 0)[0]
+                       for d in data])[:, order]
+    np.testing.assert_allclose(pooled["meanMassCi"],
+                               st.standard_error_from_realisations(ratios)[1], rtol=1e-9)

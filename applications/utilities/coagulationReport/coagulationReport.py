@@ -25,9 +25,16 @@ The 95 % half-width ci95 allows for the correlation of successive samples: for o
 run, t_{0.975,nu} sqrt(var(mean)) from the run's integrated autocorrelation time
 (effective sample size n_eff = sd^2 / var(mean)); for several --realisations,
 t_{0.975,R-1} sd(realisation means) / sqrt(R).  See coagulationPost.statistics.
-  moments.png        m_k(x): means with 95 % CI bars and the analytic curve
+  moments.png        m_k(x): means with 95 % CI bars and the analytic curve (1-D meshes)
   relativeError.png  (mean - analytic cell average) / analytic, with CI bars
   normalisedStdDev.png  sqrt(n var)/m_k against x, eq. (47) line for k = 1
+  maps.png, maps.csv (2-D meshes), slice_<axis><value>.png, .csv (--slice; 3-D meshes:
+                     the middle plane by default)
+                     M0, M1 and the mean mass M1/M0 (with the particles' material: the
+                     diameter of the mean mass, nm) per cell, and their relative 95 %
+                     half-widths (<q>_relCI95)
+  line<k>.png, .csv  (--line) the same along a segment, a step per cell with its
+                     interval, each cell's entry and exit
   summary.json       run attributes, time window, files, realisations
 
 Exit status: 0 success, 1 a --check / --check-value failed, 2 bad input
@@ -80,7 +87,8 @@ def parse_args(argv):
                    help="one run's interval: the autocorrelation sum spans at least T seconds "
                         "(default: the residence time (x - x_inlet)/u upstream of the cell; "
                         "0: Sokal's automatic window alone)")
-    p.add_argument("--no-plots", action="store_true", help="skip the PNG files")
+    p.add_argument("--no-plots", action="store_true",
+                   help="skip the pictures (the PNG files and the maps' CSV files)")
     p.add_argument("--slice", action="append", metavar="AXIS=VALUE", default=[],
                    help="maps of the moments on the plane AXIS = VALUE (x, y or z) of the "
                         "case's mesh: slice_<AXIS><VALUE>.png and .csv; repeatable. A 3-D "
@@ -134,10 +142,11 @@ def parse_args(argv):
     g.add_argument("--check-psd-m0", action="store_true",
                    help="check the PSD's sum against M0 of the probe's cell (moment samples), and "
                         "the solver's CSV averages against the samples")
-    # a point of --line that starts with a minus (-0.1,0,0) is a value, not an option
+    # a point of --line (or of an abbreviation of it) that starts with a minus (-0.1,0,0)
+    # is a value, not an option
     argv = list(argv)
     for i, token in enumerate(argv):
-        if token == "--line":
+        if len(token) > 3 and "--line".startswith(token):
             for j in (i + 1, i + 2):
                 if j < len(argv) and re.match(r"-[\d.]", argv[j]):
                     argv[j] = " " + argv[j]
@@ -208,7 +217,8 @@ def parse_point(text):
     except ValueError:
         point = []
     if len(point) != 3:
-        raise ValueError("--line %s: a point is three numbers, '(x y z)' or x,y,z" % text)
+        raise ValueError("--line %s: a point is three numbers, '(x y z)' or x,y,z"
+                         % text.strip())
     return point
 
 
