@@ -92,14 +92,12 @@ def main(argv):
     # of extents equal to round-off the last axis, as coagulationReport's default slice
     thin = max(range(3), key=lambda k: (-round(extent[k] / max(max(extent), 1e-300), 6), k))
     if args.slice or extent[thin] >= 0.05 * max(extent):
-        # three-dimensional (or a slice asked for): a slice through the middle, just below
-        # it, in the cells below a layer of faces there (as the report's default slice)
+        # three-dimensional (or a slice asked for): a slice through the middle (on a layer of
+        # faces, VTK's cut takes one layer's cells: the test counts them)
         thin = "xyz".index(args.slice) if args.slice else thin
-        origin = list(centre)
-        origin[thin] -= 1e-6 * max(extent)
         cut = Slice(Input=cells)
         cut.SliceType = "Plane"
-        cut.SliceType.Origin = origin
+        cut.SliceType.Origin = centre
         cut.SliceType.Normal = [1.0 if k == thin else 0.0 for k in range(3)]
         cut.Triangulatetheslice = 0      # a polygon a cell
         cut.UpdatePipeline(time)

@@ -1116,10 +1116,10 @@ BUGS = {
              "python_unit",
              "the mean mass and its interval in the files' order of the cells"),
     "B206": ("etc/paraview/coagulationView.py",
-             "        origin[thin] -= 1e-6 * max(extent)\n",
+             "        cut.Triangulatetheslice = 0      # a polygon a cell\n",
              "",
              "case_paraview",
-             "ParaView: the slice on a layer of faces, through both layers"),
+             "ParaView: the slice triangulated (two triangles a cut cell)"),
 }
 
 
