@@ -21,6 +21,18 @@ newCase()
     echo "$dir"
 }
 
+# tutorialCase tutorial dir [Allclean options]: a fresh copy of a tutorial in $workDir/dir,
+# cleaned by its own Allclean (the tests that run its Allrun), on standard output
+tutorialCase()
+{
+    local dir="$workDir/$2"
+    rm -rf "$dir"
+    mkdir -p "$workDir"
+    cp -r "$COAGULATIONFOAM_DIR/tutorials/$1" "$dir"
+    (cd "$dir" && ./Allclean "${@:3}") > /dev/null
+    echo "$dir"
+}
+
 # setEntry case file entry value
 setEntry()
 {

@@ -12,11 +12,8 @@
 # surface growth at the local temperature, makes larger particles along the axis.
 . "$(dirname "$0")/caseLib.sh"
 
-case="$workDir/hotReactor"
-rm -rf "$case"; mkdir -p "$workDir"
-cp -r "$COAGULATIONFOAM_DIR/tutorials/hotReactor" "$case"
+case=$(tutorialCase hotReactor hotReactor -all)
 cd "$case"
-./Allclean -all > /dev/null
 for d in system flow/system; do
     sed -i 's/(150 15 1)/(75 15 1)/' $d/blockMeshDict
 done

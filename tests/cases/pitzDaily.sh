@@ -8,11 +8,8 @@
 # holds its cell's statistics of moments_full.csv; ParaView's picture where pvbatch is.
 . "$(dirname "$0")/caseLib.sh"
 
-c="$workDir/pitzDaily"
-rm -rf "$c"; mkdir -p "$workDir"
-cp -r "$COAGULATIONFOAM_DIR/tutorials/pitzDaily" "$c"
+c=$(tutorialCase pitzDaily pitzDaily -all)
 cd "$c"
-./Allclean -all > /dev/null
 openfoamTutorial incompressible/simpleFoam/pitzDaily flow
 setEntry flow system/controlDict endTime 60
 setEntry flow system/controlDict writeInterval 60

@@ -7,11 +7,8 @@
 # deposition on the cylinder, and the wake's table and pictures are written.
 . "$(dirname "$0")/caseLib.sh"
 
-case="$workDir/squareCylinder"
-rm -rf "$case"; mkdir -p "$workDir"
-cp -r "$COAGULATIONFOAM_DIR/tutorials/squareCylinder" "$case"
+case=$(tutorialCase squareCylinder squareCylinder)
 cd "$case"
-./Allclean > /dev/null
 setEntry . system/controlDict endTime 0.6
 setEntry . system/controlDict writeInterval 0.1
 setEntry . system/controlDict functions/particles/timeStart 0.2

@@ -85,6 +85,7 @@ def _two_cells(tmp_path, binary):
              [0, 6, 9, 3], [2, 5, 11, 8], [0, 1, 7, 6], [1, 2, 8, 7], [3, 9, 10, 4],
              [4, 10, 11, 5]]
     owner = [0, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1]
+    neighbour = [1]
     if binary:
         offsets = np.cumsum([0] + [len(f) for f in faces]).astype(np.int32)
         idx = np.concatenate(faces).astype(np.int32)
@@ -95,6 +96,9 @@ def _two_cells(tmp_path, binary):
                    + b"%d\n(" % len(idx) + idx.tobytes() + b")\n", True)
         _mesh_file(d / "owner", "labelList",
                    b"%d\n(" % len(owner) + np.array(owner, np.int32).tobytes() + b")\n", True)
+        _mesh_file(d / "neighbour", "labelList",
+                   b"%d\n(" % len(neighbour) + np.array(neighbour, np.int32).tobytes()
+                   + b")\n", True)
     else:
         _mesh_file(d / "points", "vectorField", ("%d\n(\n%s\n)\n" % (len(pts), "\n".join(
             "(%g %g %g)" % tuple(p) for p in pts))).encode(), False)
@@ -102,6 +106,8 @@ def _two_cells(tmp_path, binary):
             "4(%s)" % " ".join(map(str, f)) for f in faces))).encode(), False)
         _mesh_file(d / "owner", "labelList", ("%d\n(\n%s\n)\n" % (len(owner), "\n".join(
             map(str, owner)))).encode(), False)
+        _mesh_file(d / "neighbour", "labelList", ("%d\n(\n%s\n)\n" % (len(neighbour),
+                   "\n".join(map(str, neighbour)))).encode(), False)
     (d / "boundary").write_text(
         "FoamFile\n{\n    version 2.0;\n    format ascii;\n    class polyBoundaryMesh;\n"
         "    object boundary;\n}\n2\n(\n    frontAndBack\n    {\n        type empty;\n"

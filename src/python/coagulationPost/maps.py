@@ -154,20 +154,17 @@ def patches(case):
 def cell_polygons(case, centres):
     """Each cell's polygon in the plane of a two-dimensional mesh (one cell thick between
     two 'empty' patches): the cell's face on the patch side of the smaller coordinate,
-    from constant/polyMesh (ASCII or binary), its points' two in-plane coordinates; the
-    cells matched to centres (the report's order: a decomposed run's differs from the
-    mesh's) by their faces' centroids. None where the mesh cannot be read so or does not
-    match the centres."""
-    from scipy.spatial import cKDTree
+    from constant/polyMesh (ASCII or binary, sections.read_mesh), its points' two in-plane
+    coordinates; the cells matched to centres (the report's order: a decomposed run's
+    differs from the mesh's) by sections.match_cells. None where the mesh cannot be read so
+    or does not match the centres."""
+    from . import sections
 
-    mesh = os.path.join(case, "constant", "polyMesh")
     try:
-        points = _read_list(os.path.join(mesh, "points"))
-        faces = _read_list(os.path.join(mesh, "faces"))
-        owner = _read_list(os.path.join(mesh, "owner"))
-        boundary = patches(case)
-    except (OSError, ValueError, AttributeError, IndexError):
+        mesh = sections.read_mesh(case)
+    except ValueError:
         return None
+    points, faces, owner = mesh["points"], mesh["faces"], mesh["owner"]
     # the normal of the plane: an axis the centres do not spread along (of two such, the
     # mesh's thinner)
     c = np.asarray(centres, float)
@@ -180,21 +177,17 @@ def cell_polygons(case, centres):
     front = points[:, normal].min()
     tol = 1e-9 * max(np.ptp(points, axis=0).max(), 1e-300)
     poly = {}
-    for _, kind, n, start in boundary:
+    for _, kind, n, start in mesh["patches"]:
         if kind != "empty":
             continue
         for fi in range(start, start + n):
             pts = points[faces[fi]]
             if np.all(np.abs(pts[:, normal] - front) <= tol):
                 poly[int(owner[fi])] = pts[:, [a, b]]
-    if len(poly) != len(c):
+    cell_of_row = sections.match_cells(mesh, c)
+    if len(poly) != mesh["nCells"] or cell_of_row is None:
         return None
-    cells = sorted(poly)
-    centroids = np.array([poly[k].mean(axis=0) for k in cells])
-    _, nearest = cKDTree(centroids).query(c[:, [a, b]])
-    if len(np.unique(nearest)) != len(c):
-        return None
-    return [poly[cells[j]] for j in nearest]
+    return [poly[k] for k in cell_of_row]
 
 
 def values(res, material=None):

@@ -89,10 +89,6 @@ void Foam::coagulation::cellStepper::advanceCell
     w.rng.engine().seed(cloud_.seeds()(celli, stream));
     const cellAlgorithm& algorithm =
         incepts ? *w.algorithm : *w.algorithmNoInception;
-    if (growth.active())
-    {
-        growth.law(celli, w.law);
-    }
     if (!growth.active())
     {
         algorithm.advance
@@ -100,22 +96,27 @@ void Foam::coagulation::cellStepper::advanceCell
             celli, population, inceptionRate, dt, w.rng, w.events
         );
     }
-    else if (np == 1 && !incepts)
-    {
-        // A lone particle only grows: no jump process (whose number control
-        // would act on it where a run without growth passes the cell over)
-        coag::growPopulation
-        (
-            population, w.law, dt, growth.minimumMass(), w.events
-        );
-    }
     else
     {
-        algorithm.advance
-        (
-            celli, population, inceptionRate, w.law, growth.minimumMass(),
-            dt, w.rng, w.events
-        );
+        growth.law(celli, w.law);
+        if (np == 1 && !incepts)
+        {
+            // A lone particle only grows: no jump process (whose number
+            // control would act on it where a run without growth passes the
+            // cell over)
+            coag::growPopulation
+            (
+                population, w.law, dt, growth.minimumMass(), w.events
+            );
+        }
+        else
+        {
+            algorithm.advance
+            (
+                celli, population, inceptionRate, w.law,
+                growth.minimumMass(), dt, w.rng, w.events
+            );
+        }
     }
     outcome.events = w.events;
 

@@ -26,9 +26,9 @@
 namespace coag {
 
 //- Every particle of pop after dt of law, its weight unchanged; the particles that reach
-//  minMass (or zero), or start at or below it, removed, the others kept in their order. Into stats: grownMass +=
-//  sum w (m_end - m) (a gone particle's to the threshold), and for the gone ones
-//  lostParticles, lostNumber (sum w) and lostMass (sum w m_end).
+//  minMass (or zero), or start at or below it, removed, the others kept in their order.
+//  Into stats: grownMass += sum w (m_end - m) (a gone particle's to the threshold), and
+//  for the gone ones lostParticles, lostNumber (sum w) and lostMass (sum w m_end).
 void growPopulation(CellPopulation& pop, const GrowthLaw& law, double dt, double minMass,
                     StepStatistics& stats);
 
