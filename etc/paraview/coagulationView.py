@@ -60,8 +60,8 @@ def parse(argv):
                    help="the picture's pixels, WxH, or W alone (default: 1600 wide; the "
                         "height the domain needs)")
     p.add_argument("--slice", choices=("x", "y", "z"), default=None,
-                   help="the slice's normal (default: a 3-D mesh's thinnest axis; a 2-D mesh is seen "
-                        "face on unless this is given)")
+                   help="the slice's normal (default: a 3-D mesh's thinnest axis; a 2-D "
+                        "mesh is seen face on unless this is given)")
     # in ParaView's window the arguments are ParaView's own: ignore what is not ours
     return p.parse_known_args(argv)[0]
 
@@ -137,7 +137,7 @@ def main(argv):
     shown.RescaleTransferFunctionToDataRange(True, False)
     field_lut = GetColorTransferFunction(args.field)
     field_lut.ApplyPreset("Viridis (matplotlib)", True)
-    bar(field_lut, views[0], args.field, shown_range(cells, args.field))
+    bar(field_lut, views[0], args.field, cells.CellData[args.field].GetRange())
 
     # the particles: Point Gaussian splats, coloured by mass on a log scale, over the
     # mesh's outline
@@ -164,18 +164,18 @@ def main(argv):
         bar(mass_lut, views[1], "particle mass")
 
     # the camera: face on to the 2-D mesh or the slice, parallel projection
+    # from the side that puts the picture's other axis to the right, the domain's centre
+    # BAR/2 pixels above the view's
+    focus = list(centre)
+    focus[up] -= 0.5 * BAR / k
+    position = list(focus)
+    position[thin] += (-2.0 if thin == 1 else 2.0) * max(extent)
     for view in views:
-        # from the side that puts the picture's other axis to the right
-        position = list(centre)
-        position[thin] += (-2.0 if thin == 1 else 2.0) * max(extent)
         view.CameraPosition = position
-        view.CameraFocalPoint = centre
-        view.CameraViewUp = [1.0 if k == up else 0.0 for k in range(3)]
+        view.CameraFocalPoint = focus
+        view.CameraViewUp = [1.0 if j == up else 0.0 for j in range(3)]
         view.CameraParallelProjection = 1
         view.CameraParallelScale = 0.5 * ph / k
-        position[up] -= 0.5 * BAR / k
-        view.CameraPosition = position
-        view.CameraFocalPoint = [position[j] if j != thin else centre[j] for j in range(3)]
     # the time shown, also in ParaView's window (its time controls follow the scene)
     scene = GetAnimationScene()
     scene.UpdateAnimationUsingDataTimeSteps()
@@ -185,11 +185,6 @@ def main(argv):
         SaveScreenshot(args.png, layout, SaveAllViews=1, ImageResolution=[w, h],
                        SeparatorWidth=0)
         print("coagulationView: %s (t = %g)" % (args.png, time))
-
-
-def shown_range(source, field):
-    """The range of the cell field shown."""
-    return source.CellData[field].GetRange()
 
 
 def nice_ticks(lo, hi, count=4):
