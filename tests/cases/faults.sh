@@ -4,6 +4,7 @@
 # dies of a signal, none exits 0 having lost particles or mass.
 #   faults.sh [name...]   run only the named cases (default: all)
 . "$(dirname "$0")/caseLib.sh"
+. "$(dirname "$0")/functionObjectCases.sh"
 
 base=$(newCase constantKernelDuct faults_base)
 setEntry "$base" system/controlDict endTime 0.01
@@ -56,6 +57,39 @@ expectError()
         grep -q -- "$p" "$c/log" || { tail -20 "$c/log"; fail "$(basename "$c"): error does not say '$p'"; }
     done
     passed=$((passed + 1)); echo "ok $(basename "$c"): $(grep -m1 -A1 'FOAM FATAL' "$c/log" | tail -1 | cut -c1-150)"
+}
+
+# changeDeltaT case log command...: runs the command in the case in the background with its
+#     output in case/log, doubles deltaT in system/controlDict a second after the time loop
+#     starts (a time stamp a minute ahead), waits for the end (at most 120 s); rc in $rc
+changeDeltaT()
+{
+    local c="$1" log="$2"; shift 2
+    rc=0
+    (cd "$c" && exec timeout 120 "$@") > "$c/$log" 2>&1 &
+    local pid=$! k
+    for k in $(seq 600); do
+        grep -q "^Starting time loop\|^Time = " "$c/$log" 2>/dev/null && break
+        sleep 0.1
+    done
+    sleep 1
+    foamDictionary -case "$c" "$c/system/controlDict" -entry deltaT -set 2e-4 > /dev/null
+    touch -d "+1 minute" "$c/system/controlDict"
+    wait "$pid" || rc=$?
+    [ "$rc" -ne 124 ] || fail "$(basename "$c"): no end within 120 s"
+}
+
+# expectErrorIn case log pattern...: the run of $rc stopped with a fatal error whose text in
+#     case/log has every pattern
+expectErrorIn()
+{
+    local c="$1" log="$2"; shift 2
+    [ "$rc" -ne 0 ] && [ "$rc" -lt 128 ] || { tail -20 "$c/$log"; fail "$(basename "$c"): exit $rc, expected a fatal error"; }
+    local p
+    for p in "FOAM FATAL" "$@"; do
+        grep -q -- "$p" "$c/$log" || { tail -20 "$c/$log"; fail "$(basename "$c"): error does not say '$p'"; }
+    done
+    passed=$((passed + 1)); echo "ok $(basename "$c"): $(grep -m1 -A1 'FOAM FATAL' "$c/$log" | tail -1 | cut -c1-150)"
 }
 
 # expectRun case: exit 0 with closed balances
@@ -454,6 +488,124 @@ if want tools; then
     [ "$rc" -eq 2 ] && grep -q -- "-2" "$workDir/log.ensemble" && ! grep -q "needs a value" "$workDir/log.ensemble" \
         || { cat "$workDir/log.ensemble"; fail "tools: coagulationEnsemble -realisations -2: exit $rc"; }
     passed=$((passed + 1)); echo "ok tools: a missing case, a negative count"
+fi
+
+# 22. An algorithm that does not exist, with V1 given per algorithm as the tutorials do: the
+#     error names the entry 'algorithm' and the valid algorithms, not statisticalWeight/V1
+if want unknownAlgorithm; then
+    for a in swa DSA3; do
+        c=$(copyCase "unknownAlgorithm_$a")
+        setEntry "$c" constant/coagulationProperties algorithm "$a"
+        expectError "$c" "Entry 'algorithm'" "'$a'" "SWA" "DSA1" "DSA2"
+        ! grep -q "statisticalWeight" "$c/log" || { tail -20 "$c/log"; fail "$a: the error names V1"; }
+    done
+fi
+
+# 23. A sum inside a sum (each with a Brownian part) would count Brownian coagulation twice:
+#     refused, naming the inner sum
+if want nestedSum; then
+    c=$(copyCase nestedSum)
+    gas="T 1500; p 1e5;"
+    setEntry "$c" constant/coagulationProperties kernel "{ type sum; kernels { a { type Brownian; $gas } inner { type sum; kernels { b { type Brownian; $gas } } } } }"
+    aerosolPopulation "$c"
+    expectError "$c" "Entry 'inner'" "itself a sum" "twice"
+fi
+
+# 24. Growth so fast that a particle's mass cubed is past the largest number: a fatal error
+#     naming the growth, not SIGFPE
+if want hugeGrowth; then
+    for g in "{ type constant; rate 1e300; }" "{ type surface; rate 1e100; }"; do
+        c=$(copyCase hugeGrowth)
+        aerosolPopulation "$c"
+        foamDictionary "$c/constant/coagulationProperties" -entry growth -add "{ fast $g }" > /dev/null
+        expectError "$c" "growth" "coagulationProperties"
+    done
+fi
+
+# 25. logSteps takes OpenFOAM's switch words (yes/no, true/false, on/off) beside auto
+if want logSteps; then
+    c=$(copyCase logSteps)
+    setEntry "$c" system/controlDict endTime 0.1
+    setEntry "$c" system/controlDict writeInterval 0.05
+    foamDictionary "$c/system/controlDict" -entry logSteps -add yes > /dev/null
+    expectRun "$c"
+    [ "$(grep -c "^Time = " "$c/log")" -ge 1000 ] || fail "logSteps yes: not a line every step"
+    foamDictionary "$c/system/controlDict" -entry logSteps -set false > /dev/null
+    rm -rf "$c"/0.* "$c/postProcessing"; expectRun "$c"
+    [ "$(grep -c "^Time = " "$c/log")" -lt 100 ] || fail "logSteps false: a line every step"
+    foamDictionary "$c/system/controlDict" -entry logSteps -set sometimes > /dev/null
+    expectError "$c" "logSteps" "sometimes" "auto"
+fi
+
+# 26. deltaT changed in system/controlDict while the run runs (runTimeModifiable): the run
+#     stops naming deltaT, the old and the new step, instead of stepping on with samples off
+#     their grid. The edit is made once the run is under way, its time stamp in the future so
+#     that OpenFOAM's modification check (fileModificationSkew) sees it at once
+if want deltaTChange; then
+    c=$(copyCase deltaTChange)
+    setEntry "$c" system/controlDict endTime 4
+    setEntry "$c" system/controlDict writeInterval 1
+    setEntry "$c" system/controlDict runTimeModifiable true
+    changeDeltaT "$c" log coagulationFoam
+    expectErrorIn "$c" log "Entry 'deltaT'" "changed from 0.0001 to 0.0002" "controlDict"
+fi
+
+# foCase name [entries]: the duct in scalarTransportFoam with the coagulationCloud function
+#     object (its entries given)
+foCase()
+{
+    local c
+    c=$(copyCase "$1")
+    scalarTransport "$c"
+    fo "$c" "${2:-}"
+    echo "$c"
+}
+
+# runFo case: scalarTransportFoam in the case, rc in $rc (a signal or a time-out fails)
+runFo()
+{
+    local c="$1"
+    rc=0
+    (cd "$c" && exec timeout 120 scalarTransportFoam) > "$c/log" 2>&1 || rc=$?
+    [ "$rc" -ne 124 ] || fail "$(basename "$c"): no end within 120 s"
+}
+
+# 27. The function object: a region the case does not have, a second coagulationCloud on
+#     the same mesh, a timeStart at or after endTime, deltaT changed while the solver runs,
+#     and an executeInterval that the Courant number does not allow: each stops the solver
+#     with a FatalIOError naming the entry (OpenFOAM's function-object list would make a
+#     FatalError of the construction a warning and run on without particles)
+if want functionObject; then
+    c=$(foCase foRegion "region gas;")
+    runFo "$c"; expectErrorIn "$c" log "Entry 'region' = gas" "no mesh region" "region0"
+    c=$(foCase foTwoClouds)
+    foamDictionary -case "$c" "$c/system/controlDict" -entry functions/more \
+        -add "{ type coagulationCloud; libs (coagulationModels); }" > /dev/null
+    runFo "$c"; expectErrorIn "$c" log "Function object more" "already has a coagulation cloud"
+    [ ! -d "$c/0.005/lagrangian" ] || fail "foTwoClouds: particles written"
+    for t in 0.01 2; do
+        c=$(foCase foTimeStart "timeStart $t;")
+        runFo "$c"; expectErrorIn "$c" log "Entry 'timeStart' = $t" "endTime 0.01"
+    done
+    c=$(foCase foDeltaT)
+    setEntry "$c" system/controlDict endTime 4
+    setEntry "$c" system/controlDict writeInterval 1
+    setEntry "$c" system/controlDict runTimeModifiable true
+    changeDeltaT "$c" log scalarTransportFoam
+    expectErrorIn "$c" log "Entry 'deltaT'" "changed from 0.0001 to 0.0002" "controlDict"
+    # a velocity checked at the population's first step (timeStart) is checked all the same
+    c=$(foCase foLateCourant "timeStart 0.01;")
+    setEntry "$c" system/controlDict deltaT 5e-3
+    setEntry "$c" system/controlDict endTime 0.02
+    setEntry "$c" system/controlDict writeInterval 0.01
+    runFo "$c"; expectErrorIn "$c" log "Courant number" "deltaT"
+    grep -q "The velocity is checked at the population's first step" "$c/log" \
+        || fail "foLateCourant: the velocity was checked at the start"
+    c=$(foCase foInterval "executeInterval 100;")
+    setEntry "$c" system/controlDict endTime 0.01
+    setEntry "$c" system/controlDict writeInterval 0.01
+    runFo "$c"; expectErrorIn "$c" log "Courant number" "executeInterval <= 40"
+    ! grep -q "Set deltaT" "$c/log" || fail "foInterval: the error advises deltaT"
 fi
 
 echo "PASS faults: $passed cases ran with closed balances or stopped with a named fatal error"

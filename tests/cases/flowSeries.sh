@@ -13,7 +13,11 @@
 #     written every P/4 the linear interpolation in time is far off, and the check fails;
 #  3. a series with a time without U, one that ends before the run, one on another mesh and
 #     a folder that is not there are refused with a FatalIOError naming them (a flowSeries
-#     inside the function object: case_functionObject).
+#     inside the function object: case_functionObject);
+#  4. a gap of purged writes is refused naming its times (maxGap accepts it); 5. a flow run
+#     never reconstructed is named as such;
+#  6. the interpolation at a quarter of an interval, of U and of a model's field (kS of surface
+#     growth), against the exact linear interpolation.
 . "$(dirname "$0")/caseLib.sh"
 
 u0=1; a=0.5; P=0.4
@@ -123,4 +127,115 @@ writeSeries "$other" 0.05 0.2
 refuse otherMesh "is on another mesh" "{ type frozenFlow; flowSeries \"$other\"; }"
 refuse missing "not a folder" "{ type frozenFlow; flowSeries \"$workDir/noSuchCase\"; }"
 echo "ok refusals: a gap, too short, another mesh, no folder"
+
+# 4. Purged writes (purgeWrite leaves 0 and the last few times): a gap longer than three
+#    spacings of the series is refused, naming its two times; maxGap accepts it
+purged=$(flowCase series_purgedFlow)
+writeSeries "$purged" 0.02 0.2
+(cd "$purged" && rm -rf 0.02 0.04 0.06 0.08 0.1 0.12)
+refuse purged "between 0 and 0.14" "{ type frozenFlow; flowSeries \"$purged\"; }"
+grep -q "maxGap 0.14" "$workDir/series_bad_purged/log" || fail "purged: no maxGap advice"
+c="$workDir/series_bad_purged"
+setEntry "$c" constant/coagulationProperties transport/maxGap 0.14
+(cd "$c" && coagulationFoam > log 2>&1) || { tail -20 "$c/log"; fail "purged: maxGap 0.14 refused"; }
+echo "ok purged series: the gap 0 to 0.14 refused, accepted with maxGap"
+
+# 5. A flow run decomposed and never reconstructed: the error says so
+decomposed=$(flowCase series_decomposedFlow)
+writeSeries "$decomposed" 0.05 0.2
+mkdir -p "$decomposed/processor0" "$decomposed/processor1"
+for t in 0.05 0.1 0.15 0.2; do mv "$decomposed/$t" "$decomposed/processor0/$t"; done
+refuse decomposed "reconstructPar" "{ type frozenFlow; flowSeries \"$decomposed\"; }"
+echo "ok decomposed flow: the error names reconstructPar"
+
+# 6. The interpolation itself: at a quarter of an interval U is 3/4 of the earlier written
+#    field and 1/4 of the later one. U of 1, 2 and 1 m/s at 0, 0.1 and 0.2; the run writes
+#    U of its time every 0.025
+steps=$(flowCase series_stepsFlow)
+for tu in "0 1" "0.1 2" "0.2 1"; do
+    set -- $tu
+    mkdir -p "$steps/$1"
+    sed "s/uniform (1 0 0)/uniform ($2 0 0)/g" "$COAGULATIONFOAM_DIR/tutorials/constantKernelDuct/0/U" \
+        > "$steps/$1/U"
+done
+c=$(newCase constantKernelDuct series_quarter)
+setEntry "$c" system/controlDict endTime 0.2
+setEntry "$c" system/controlDict writeInterval 0.025
+setEntry "$c" system/controlDict writeFormat ascii
+setEntry "$c" constant/coagulationProperties splitting Strang
+foamDictionary -entry transport -add "{ type frozenFlow; flowSeries \"$steps\"; }" \
+    "$c/constant/coagulationProperties" > /dev/null
+(cd "$c" && runApplication coagulationFoam) || fail "the stepped series"
+"$COAGULATIONFOAM_PYTHON" - "$c" <<'PY' || fail "U is not the series' linear interpolation"
+import re, sys
+case = sys.argv[1]
+for t in ("0.025", "0.075", "0.125", "0.175"):
+    s = open("%s/%s/U" % (case, t)).read()
+    u = float(re.search(r"internalField\s+uniform\s+\(([^ ]+)", s).group(1))
+    tm = float(t)
+    exact = 1 + tm / 0.1 if tm < 0.1 else 2 - (tm - 0.1) / 0.1
+    print("U at %s: %.15g, the interpolation: %.15g" % (t, u, exact))
+    if abs(u / exact - 1) > 1e-12:
+        sys.exit(1)
+PY
+echo "ok the series' U at a quarter and three quarters of its intervals"
+
+# ... and for a field a model reads: surface growth at the rate kS of the series (1e-4, 3e-4,
+#    1e-4 kg/(m2 s) at 0, 0.04, 0.08; U = 0) on particles of 10 nm: d(t) = d0 + 2 K(t)/rho with
+#    K the integral of the interpolated kS, exact at every write (the growth is set at the
+#    middle of each of its half steps, exact for kS linear within a step)
+rates=$(flowCase series_ratesFlow)
+for tk in "0 1e-4" "0.04 3e-4" "0.08 1e-4"; do
+    set -- $tk
+    mkdir -p "$rates/$1"
+    sed "s/uniform (1 0 0)/uniform (0 0 0)/g" "$COAGULATIONFOAM_DIR/tutorials/constantKernelDuct/0/U" \
+        > "$rates/$1/U"
+    cat > "$rates/$1/kS" <<DICT
+FoamFile { version 2.0; format ascii; class volScalarField; object kS; }
+dimensions [1 -2 -1 0 0 0 0];
+internalField uniform $2;
+boundaryField { inlet { type zeroGradient; } outlet { type zeroGradient; } sides { type empty; } }
+DICT
+done
+c=$(newCase constantKernelDuct series_growthRate)
+cp "$rates/0/U" "$c/0/U"
+setEntry "$c" system/controlDict deltaT 1e-3
+setEntry "$c" system/controlDict endTime 0.08
+setEntry "$c" system/controlDict writeInterval 0.01
+setEntry "$c" system/controlDict writeFormat ascii
+setEntry "$c" system/controlDict writePrecision 17
+foamDictionary -entry functions -remove "$c/system/controlDict" > /dev/null
+props="$c/constant/coagulationProperties"
+setEntry "$c" constant/coagulationProperties kernel "{ type none; }"
+setEntry "$c" constant/coagulationProperties inception "{ rate 0; mass 1; }"
+setEntry "$c" constant/coagulationProperties sampling "{ tRelax 1; sampleInterval 0.01; }"
+setEntry "$c" constant/coagulationProperties splitting Strang
+foamDictionary "$props" -entry particles -add "{ density 1800; }" > /dev/null
+foamDictionary "$props" -entry initialPopulation -add "{ numberDensity 1e12; diameter 1e-8; }" > /dev/null
+foamDictionary "$props" -entry growth -add "{ coat { type surface; rate kS; } }" > /dev/null
+foamDictionary "$props" -entry transport -add "{ type frozenFlow; flowSeries \"$rates\"; }" > /dev/null
+setEntry "$c" constant/coagulationProperties statisticalWeight "{ n 4; V1 1e-12; }"
+(cd "$c" && runApplication coagulationFoam) || fail "surface growth from the series' kS"
+checkBalance "$c/log.coagulationFoam"
+PYTHONPATH="$testsDir:$COAGULATIONFOAM_DIR/src/python${PYTHONPATH:+:$PYTHONPATH}" \
+    "$COAGULATIONFOAM_PYTHON" - "$c" <<'PY' || fail "the growth is not that of the series' kS in time"
+import sys
+import numpy as np
+from dispersionCases import read_field
+case, rho, d0 = sys.argv[1], 1800.0, 1e-8
+def K(t):
+    """The integral of kS, linear between 1e-4 at 0, 3e-4 at 0.04 and 1e-4 at 0.08."""
+    if t <= 0.04:
+        return 1e-4 * t + 2e-4 * t * t / 0.08
+    return K(0.04) + 3e-4 * (t - 0.04) - 2e-4 * (t - 0.04) ** 2 / 0.08
+worst = 0
+for t in ("0.01", "0.02", "0.03", "0.05", "0.07", "0.08"):
+    mass = np.asarray(read_field(case, t, "M1")) / np.asarray(read_field(case, t, "M0"))
+    d = (6 * mass / (np.pi * rho)) ** (1 / 3)
+    exact = d0 + 2 * K(float(t)) / rho
+    worst = max(worst, np.abs(d / exact - 1).max())
+print("surface growth from the series' kS: the diameters exact to %.1e at 6 writes" % worst)
+sys.exit(0 if worst < 1e-10 else 1)
+PY
+echo "ok the series' kS at every step: the diameters of its integral in time"
 echo "PASS flowSeries"

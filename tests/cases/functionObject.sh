@@ -16,35 +16,7 @@
 #     endTime are refused with a FatalIOError naming the entry; an incomplete start time
 #     stops the run (a FatalError that OpenFOAM's function-object list would only warn of).
 . "$(dirname "$0")/caseLib.sh"
-
-# fo case [U]: the function object in the case's controlDict
-fo()
-{
-    foamDictionary -case "$1" "$1/system/controlDict" -entry functions/particles \
-        -add "{ type coagulationCloud; libs (coagulationModels); ${2:-} }" > /dev/null
-    foamDictionary -case "$1" "$1/system/controlDict" -entry functions/momentAverages \
-        -remove > /dev/null
-}
-
-# scalarTransport case: the duct as a scalarTransportFoam case (a passive T, U kept as read)
-scalarTransport()
-{
-    local c="$1"
-    sed -e 's/volVectorField/volScalarField/' -e 's/object      U;/object      T;/' \
-        -e 's/\[0 1 -1 0 0 0 0\]/[0 0 0 1 0 0 0]/' -e 's/uniform (1 0 0)/uniform 1/g' \
-        "$c/0/U" > "$c/0/T"
-    cat > "$c/constant/transportProperties" <<'DICT'
-FoamFile { version 2.0; format ascii; class dictionary; object transportProperties; }
-DT 1e-9;
-DICT
-    foamDictionary -case "$c" "$c/system/fvSchemes" -entry divSchemes/"div(phi,T)" \
-        -add "Gauss upwind" > /dev/null
-    foamDictionary -case "$c" "$c/system/fvSolution" -entry solvers/T \
-        -add "{ solver PBiCGStab; preconditioner DILU; tolerance 1e-12; relTol 0; }" > /dev/null
-    foamDictionary -case "$c" "$c/system/fvSolution" -entry SIMPLE \
-        -add "{ nNonOrthogonalCorrectors 0; }" > /dev/null
-    setEntry "$c" system/controlDict application scalarTransportFoam
-}
+. "$(dirname "$0")/functionObjectCases.sh"
 
 # 1. Frozen flow: coagulationFoam and the function object in scalarTransportFoam
 for splitting in Lie Strang; do
@@ -142,58 +114,6 @@ for p in 0 1; do
     [ "$n" -gt 0 ] || fail "parallel: no particles on processor $p"
 done
 echo "ok parallel: 2 processors, the function object gives coagulationFoam -parallel's particles bit for bit"
-
-# pimpleCase dir: the duct as a laminar pimpleFoam case (p, nu, fvSchemes, fvSolution)
-pimpleCase()
-{
-    local c
-    c=$(newCase constantKernelDuct "$1")
-    cat > "$c/0/p" <<'DICT'
-FoamFile { version 2.0; format ascii; class volScalarField; object p; }
-dimensions [0 2 -2 0 0 0 0];
-internalField uniform 0;
-boundaryField
-{
-    inlet { type zeroGradient; }
-    outlet { type fixedValue; value uniform 0; }
-    sides { type empty; }
-}
-DICT
-    cat > "$c/constant/transportProperties" <<'DICT'
-FoamFile { version 2.0; format ascii; class dictionary; object transportProperties; }
-transportModel Newtonian;
-nu 1e-5;
-DICT
-    cat > "$c/constant/turbulenceProperties" <<'DICT'
-FoamFile { version 2.0; format ascii; class dictionary; object turbulenceProperties; }
-simulationType laminar;
-DICT
-    cat > "$c/system/fvSchemes" <<'DICT'
-FoamFile { version 2.0; format ascii; class dictionary; object fvSchemes; }
-ddtSchemes { default Euler; }
-gradSchemes { default Gauss linear; }
-divSchemes { default none; div(phi,U) Gauss linear; div((nuEff*dev2(T(grad(U))))) Gauss linear; }
-laplacianSchemes { default Gauss linear corrected; }
-interpolationSchemes { default linear; }
-snGradSchemes { default corrected; }
-DICT
-    cat > "$c/system/fvSolution" <<'DICT'
-FoamFile { version 2.0; format ascii; class dictionary; object fvSolution; }
-solvers
-{
-    p { solver PCG; preconditioner DIC; tolerance 1e-10; relTol 0; }
-    pFinal { $p; }
-    U { solver PBiCGStab; preconditioner DILU; tolerance 1e-10; relTol 0; }
-    UFinal { $U; }
-}
-PIMPLE { nOuterCorrectors 1; nCorrectors 2; nNonOrthogonalCorrectors 0; }
-DICT
-    setEntry "$c" system/controlDict application pimpleFoam
-    setEntry "$c" system/controlDict endTime 1.2
-    setEntry "$c" system/controlDict writeInterval 1.2
-    fo "$c"
-    echo "$c"
-}
 
 # 2. pimpleFoam solving the uniform flow (Lie splitting): the duct's analytic moments
 c=$(pimpleCase fo_pimpleFoam)

@@ -12,7 +12,8 @@
 #  3. coagulationFoam on the written times of run 1 (transport flowSeries) reads T from
 #     them, linear in time: the exact moments;
 #  4. a field the solver does not register (the function object) and a flow series with a
-#     time that lacks T are FatalIOErrors naming the field and the folder;
+#     time that lacks T are FatalIOErrors naming the field and the folder; a field registered
+#     by readFields is written with the cloud's times, so that a restart finds it;
 #  5. kernels (localSaffmanTurner's epsilon, the Brownian kernel's T in a sum) and 6. the
 #     turbulent walk's nut on fields that grow in time in a flow series, against the runs at
 #     their time means (time rescaling).
@@ -156,6 +157,24 @@ rm "$bad/log.scalarTransportFoam"
 (cd "$bad" && runApplication scalarTransportFoam) || fail "scalarTransportFoam with readFields"
 check "$bad" 0 || fail "the rate field registered by readFields does not give its rate"
 echo "ok: a field registered by readFields (constant rate r0): the exact moments"
+# ... written with the cloud's times: a restart from 0.05 finds it there and continues the
+#     run bit for bit; a start time without the file is named as what is missing
+[ -f "$bad/0.05/rate" ] || fail "the field registered by readFields is not written with 0.05"
+rst="$workDir/fo_rampReadFieldsRestart"
+rm -rf "$rst"; cp -r "$bad" "$rst"
+(cd "$rst" && foamListTimes -rm -time '0.06:' > /dev/null && rm -rf postProcessing log.*)
+setEntry "$rst" system/controlDict startFrom latestTime
+(cd "$rst" && runApplication scalarTransportFoam) || fail "the restart with readFields from 0.05"
+grep -q "Create mesh for time = 0.05" "$rst/log.scalarTransportFoam" || fail "did not restart from 0.05"
+for f in "$bad"/0.1/lagrangian/coagulationCloud/* "$bad"/0.1/M0 "$bad"/0.1/M1; do
+    cmp -s "$f" "$rst/0.1/${f#"$bad/0.1/"}" || fail "the restart from 0.05: $f differs"
+done
+(cd "$rst" && foamListTimes -rm -time '0.06:' > /dev/null && rm "0.05/rate" log.*)
+(cd "$rst" && scalarTransportFoam > log.scalarTransportFoam 2>&1) \
+    && fail "a restart without the readFields field was accepted"
+grep -q "The start time 0.05 has no file rate" "$rst/log.scalarTransportFoam" \
+    || { tail -20 "$rst/log.scalarTransportFoam"; fail "the error does not name the missing file"; }
+echo "ok: the readFields field written with the times: a restart from 0.05 bit for bit; without it, named"
 
 gap=$(rampCase fo_rampGap)
 rm "$gap/0/T"

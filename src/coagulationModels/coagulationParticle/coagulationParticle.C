@@ -177,4 +177,74 @@ void Foam::coagulation::coagulationParticle::hitProcessorPatch
 }
 
 
+Foam::tensor Foam::coagulation::coagulationParticle::crossingRotation
+(
+    const coupledPolyPatch& receive
+) const
+{
+    // The receiving patch's rotation, as OpenFOAM's crossing applies it to
+    // the position: uniform, or the one of the face the particle is on
+    if (receive.parallel())
+    {
+        return I;
+    }
+    const tensorField& T = receive.forwardT();
+    const label facei = face() - receive.start();
+    if (T.size() == 1)
+    {
+        return T[0];
+    }
+    return facei >= 0 && facei < receive.size() ? T[facei] : I;
+}
+
+
+void Foam::coagulation::coagulationParticle::hitCyclicPatch
+(
+    coagulationCloud& cloud,
+    trackingData& td
+)
+{
+    const cyclicPolyPatch& send =
+        refCast<const cyclicPolyPatch>(mesh().boundaryMesh()[patch()]);
+    particle::hitCyclicPatch(cloud, td);
+    td.rotate(crossingRotation(send.neighbPatch()));
+}
+
+
+void Foam::coagulation::coagulationParticle::hitCyclicAMIPatch
+(
+    coagulationCloud& cloud,
+    trackingData& td,
+    const vector& direction
+)
+{
+    const cyclicAMIPolyPatch& send =
+        refCast<const cyclicAMIPolyPatch>(mesh().boundaryMesh()[patch()]);
+    particle::hitCyclicAMIPatch(cloud, td, direction);
+    if (td.keepParticle)
+    {
+        td.rotate(crossingRotation(send.neighbPatch()));
+    }
+}
+
+
+void Foam::coagulation::coagulationParticle::transformProperties
+(
+    const tensor& T
+)
+{
+    particle::transformProperties(T);
+    dispersal_ = transform(T, dispersal_);
+}
+
+
+void Foam::coagulation::coagulationParticle::transformProperties
+(
+    const vector& separation
+)
+{
+    particle::transformProperties(separation);
+}
+
+
 // ************************************************************************* //

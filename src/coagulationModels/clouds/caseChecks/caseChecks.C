@@ -400,13 +400,23 @@ void Foam::coagulation::caseChecks::courant
             stepInterval > 1
           ? " (" + Foam::name(stepInterval) + " time steps a split step)"
           : "";
+        // The function object's split step is executeInterval time steps
+        // of the flow solver's deltaT: fewer time steps a split step first
+        const label maxInterval =
+            label(std::floor(stepInterval*(1 + 1e-9)/Co));
+        const string advice =
+            stepInterval > 1 && maxInterval >= 1
+          ? "Set the function object's executeInterval <= "
+          + Foam::name(maxInterval)
+          : "Set deltaT <= " + Foam::name(deltaT*stepInterval/Co)
+          + (stepInterval > 1 ? " and executeInterval 1" : "");
         FatalIOErrorInFunction(runTime.controlDict())
             << "Entry 'deltaT' = " << deltaT << " in "
             << runTime.controlDict().name() << steps.c_str()
             << " gives a Courant number of "
             << Co << " > 1: particles would cross cells whose cell step they"
             << " never see, and inflow would skip the first cells." << nl
-            << "    Set deltaT <= " << deltaT/Co << nl
+            << "    " << advice.c_str() << nl
             << exit(FatalIOError);
     }
 }

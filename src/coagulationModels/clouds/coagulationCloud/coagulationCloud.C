@@ -61,7 +61,8 @@ Foam::coagulation::coagulationCloud::coagulationCloud
     volVectorField& U,
     const word& cloudName,
     const bool liveFlow,
-    const label stepInterval
+    const label stepInterval,
+    const bool checkFlowNow
 )
 :
     Cloud<coagulationParticle>(U.mesh(), cloudName, false),
@@ -69,6 +70,8 @@ Foam::coagulation::coagulationCloud::coagulationCloud
     U_(U),
     liveFlow_(liveFlow),
     stepInterval_(stepInterval),
+    deltaT_(U.mesh().time().deltaTValue()),
+    flowChecked_(checkFlowNow),
     properties_
     (
         IOobject
@@ -80,7 +83,7 @@ Foam::coagulation::coagulationCloud::coagulationCloud
             IOobject::NO_WRITE
         )
     ),
-    algorithmName_(properties_.get<word>("algorithm")),
+    algorithmName_(readAlgorithmName(properties_)),
     splitting_(splittingScheme::Strang),
     scaling_
     (
@@ -451,6 +454,7 @@ void Foam::coagulation::coagulationCloud::postStep()
 
 void Foam::coagulation::coagulationCloud::evolve()
 {
+    checkStep();
     const scalar dt = splitDeltaT();
     const scalar t = mesh_.time().value();
 

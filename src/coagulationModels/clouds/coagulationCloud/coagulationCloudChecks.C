@@ -147,6 +147,56 @@ void Foam::coagulation::coagulationCloud::checkMemory() const
 }
 
 
+void Foam::coagulation::coagulationCloud::checkStep()
+{
+    if (!flowChecked_)
+    {
+        checkVelocity(U_);
+        flowChecked_ = true;
+    }
+
+    // A controlDict edited while the run runs (runTimeModifiable) can set
+    // another deltaT: the samples' fixed interval, the split steps of the
+    // random streams and the restart records all assume the step of the
+    // start, so a change stops the run instead of stepping on silently
+    const Time& runTime = mesh_.time();
+    const scalar deltaT = runTime.deltaTValue();
+    if (mag(deltaT - deltaT_) > 1e-9*deltaT_)
+    {
+        FatalIOErrorInFunction(runTime.controlDict())
+            << "Entry 'deltaT' in " << runTime.controlDict().name()
+            << " changed from " << deltaT_ << " to " << deltaT
+            << " at time " << runTime.timeName() << " while the run ran:"
+            << " the particle population steps with the fixed deltaT of the"
+            << " start (its samples, random streams and restarts are on that"
+            << " step)." << nl << "    Set deltaT back to " << deltaT_
+            << ", or stop the run and restart it from its latest written"
+            << " time with the new deltaT" << nl << exit(FatalIOError);
+    }
+}
+
+
+Foam::word Foam::coagulation::coagulationCloud::readAlgorithmName
+(
+    const dictionary& dict
+)
+{
+    // Checked before the entries that are given per algorithm
+    // (statisticalWeight/V1 { SWA ...; DSA1 ...; }) are read by its name
+    const word name(dict.get<word>("algorithm"));
+    const auto* table = cellAlgorithm::componentsConstructorTablePtr_;
+    if (!table || !table->found(name))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'algorithm' in " << dict.name() << " is '" << name
+            << "'; valid algorithms are "
+            << (table ? table->sortedToc() : wordList()) << nl
+            << exit(FatalIOError);
+    }
+    return name;
+}
+
+
 void Foam::coagulation::coagulationCloud::checkExpectedSize
 (
     const volVectorField& U
@@ -558,10 +608,27 @@ void Foam::coagulation::coagulationCloud::checkFlow
     const volVectorField& U
 ) const
 {
-    caseChecks::velocity(U);
     caseChecks::emptyPatches(mesh_);
-    caseChecks::courant(U, stepInterval_);
     caseChecks::timeControls(mesh_.time());
+    if (!flowChecked_)
+    {
+        // A flow solver's velocity before the population starts (a
+        // function object's timeStart) is checked at the first split step
+        Info<< "The velocity is checked at the population's first step"
+            << nl << endl;
+        return;
+    }
+    checkVelocity(U);
+}
+
+
+void Foam::coagulation::coagulationCloud::checkVelocity
+(
+    const volVectorField& U
+) const
+{
+    caseChecks::velocity(U);
+    caseChecks::courant(U, stepInterval_);
 
     // Inflow asked for must find an inlet
     if (injection_)

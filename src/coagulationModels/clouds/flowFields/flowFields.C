@@ -271,6 +271,24 @@ bool Foam::coagulation::flowFields::set
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::wordList Foam::coagulation::flowFields::unwrittenLiveFields() const
+{
+    DynamicList<word> names;
+    for (const flowField& f : fields_)
+    {
+        const volScalarField* now =
+            f.source_ == source::live
+          ? mesh_.findObject<volScalarField>(f.name_)
+          : nullptr;
+        if (now && now->writeOpt() == IOobject::NO_WRITE)
+        {
+            names.append(f.name_);
+        }
+    }
+    return wordList(std::move(names));
+}
+
+
 const Foam::coagulation::flowFields::flowField&
 Foam::coagulation::flowFields::cellField
 (
@@ -340,16 +358,36 @@ Foam::coagulation::flowFields::cellField
             mesh_.findObject<volScalarField>(fieldName);
         if (!now)
         {
+            // A readFields function object registers a field only where
+            // the start time holds its file: say which is missing
+            const fileName file(mesh_.time().timePath()/fieldName);
+            const bool inTime = isFile(file) || isFile(file + ".gz");
             FatalIOErrorInFunction(dict)
                 << "The " << model << " (" << dict.name() << ") reads the"
                 << " field '" << fieldName << "' (entry '" << entry << "'),"
                 << " which the flow solver does not register: inside a flow"
                 << " solver the cloud takes its fields from the solver at"
                 << " every step." << nl << "    The solver's fields: "
-                << mesh_.sortedNames<volScalarField>() << nl
-                << "    Name one of them, or read the field from the time"
-                << " folders with a readFields function object listed before"
-                << " the cloud" << nl << exit(FatalIOError);
+                << mesh_.sortedNames<volScalarField>() << nl;
+            if (inTime)
+            {
+                FatalIOError
+                    << "    Name one of them, or read the field from the time"
+                    << " folders with a readFields function object listed"
+                    << " before the cloud" << nl;
+            }
+            else
+            {
+                FatalIOError
+                    << "    The start time " << mesh_.time().timeName()
+                    << " has no file " << fieldName << " (" << file << "),"
+                    << " so a readFields function object cannot read it"
+                    << " either: copy the field into the start time, or"
+                    << " restart from a time that holds it (the cloud writes"
+                    << " the fields it reads through readFields with its"
+                    << " times)" << nl;
+            }
+            FatalIOError << exit(FatalIOError);
         }
         checkDimensions(*f, *now);
         checkValues

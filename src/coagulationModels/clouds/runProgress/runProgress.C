@@ -6,7 +6,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "runProgress.H"
-#include "Enum.H"
+#include "Switch.H"
 
 #include <cmath>
 
@@ -16,13 +16,6 @@ namespace
 {
 
 enum class stepLines { on, off, automatic };
-
-const Foam::Enum<stepLines> stepLinesNames
-({
-    { stepLines::on, "on" },
-    { stepLines::off, "off" },
-    { stepLines::automatic, "auto" }
-});
 
 //- Runs of at most this many steps get a line every step (auto)
 constexpr Foam::label maxLoggedSteps = 500;
@@ -68,15 +61,21 @@ Foam::coagulation::runProgress::runProgress(const Time& runTime)
       ? max(label(std::round(span/dt)), label(0))
       : -1;
 
+    // auto, or any of OpenFOAM's switch words (on/off, yes/no, true/false,
+    // y/n, t/f, none)
     const word logSteps(controls.getOrDefault<word>("logSteps", "auto"));
-    if (!stepLinesNames.found(logSteps))
+    const Switch asSwitch(logSteps, true);
+    if (logSteps != "auto" && !asSwitch.valid())
     {
         FatalIOErrorInFunction(controls)
             << "Entry 'logSteps' in " << controls.name() << " is '" << logSteps
-            << "'; valid values are " << stepLinesNames << nl
-            << exit(FatalIOError);
+            << "'; valid values are auto or a switch (on, off, yes, no,"
+            << " true, false)" << nl << exit(FatalIOError);
     }
-    const stepLines lines = stepLinesNames[logSteps];
+    const stepLines lines =
+        logSteps == "auto"
+      ? stepLines::automatic
+      : (asSwitch ? stepLines::on : stepLines::off);
     everyStep_ =
         lines == stepLines::on
      || (

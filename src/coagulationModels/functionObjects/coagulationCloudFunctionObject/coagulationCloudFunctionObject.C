@@ -30,6 +30,34 @@ namespace coagulation
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+const Foam::dictionary&
+Foam::coagulation::coagulationCloudFunctionObject::checkRegion
+(
+    const word& name,
+    const Time& runTime,
+    const dictionary& dict
+)
+{
+    // OpenFOAM's base class looks the region up with a FatalError, which
+    // functionObjectList turns into a warning and runs on without the
+    // function object: an IOerror here stops the run instead
+    const word region =
+        dict.getOrDefault<word>("region", polyMesh::defaultRegion);
+    if (!runTime.foundObject<fvMesh>(region))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'region' = " << region << " of function object "
+            << name << " (type " << typeName << ") in " << dict.name()
+            << ": the case has no mesh region of that name; it has "
+            << runTime.sortedNames<fvMesh>() << nl
+            << "    Name one of them, or remove the entry for the default"
+            << " region " << polyMesh::defaultRegion << nl
+            << exit(FatalIOError);
+    }
+    return dict;
+}
+
+
 void Foam::coagulation::coagulationCloudFunctionObject::checkTransient
 (
     const dictionary& dict
@@ -164,7 +192,12 @@ coagulationCloudFunctionObject
     const dictionary& dict
 )
 :
-    functionObjects::fvMeshFunctionObject(name, runTime, dict),
+    functionObjects::fvMeshFunctionObject
+    (
+        name,
+        runTime,
+        checkRegion(name, runTime, dict)
+    ),
     cloud_(),
     cloudObjects_()
 {
@@ -214,6 +247,21 @@ bool Foam::coagulation::coagulationCloudFunctionObject::read
     checkStepInterval(dict, interval);
     if
     (
+        dict.found("timeStart")
+     && dict.get<scalar>("timeStart")
+      > time_.endTime().value() - 0.5*time_.deltaTValue()
+    )
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'timeStart' = " << dict.get<scalar>("timeStart")
+            << " of function object " << name() << " in " << dict.name()
+            << " is not before the run's endTime "
+            << time_.endTime().value() << ": the population would never"
+            << " make a step." << nl << "    Set timeStart before endTime,"
+            << " or a later endTime" << nl << exit(FatalIOError);
+    }
+    if
+    (
         dict.found("timeEnd")
      && dict.get<scalar>("timeEnd") < time_.endTime().value()
     )
@@ -225,6 +273,21 @@ bool Foam::coagulation::coagulationCloudFunctionObject::read
             << ": the population's balances are checked at the end of the"
             << " run." << nl << "    Remove the entry" << nl
             << exit(FatalIOError);
+    }
+
+    // One population a mesh: a second would write the same particle
+    // files, samples and balances
+    const word cloudName("coagulationCloud");
+    if (mesh_.foundObject<coagulationCloud>(cloudName))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Function object " << name() << " (type " << typeName
+            << ") in " << dict.name() << ": the mesh "
+            << mesh_.name() << " already has a coagulation cloud, made by"
+            << " another function object of this type. Both would write the"
+            << " same lagrangian/" << cloudName << " files, samples and"
+            << " balances." << nl << "    Keep one coagulationCloud function"
+            << " object per mesh region" << nl << exit(FatalIOError);
     }
 
     const word UName = dict.getOrDefault<word>("U", "U");
@@ -239,6 +302,13 @@ bool Foam::coagulation::coagulationCloudFunctionObject::read
             << exit(FatalIOError);
     }
 
+    // A population that starts later than the solver (timeStart) checks
+    // the velocity as the flow is then, at its first split step: the
+    // solver's initial field (a fluid at rest) says nothing of it
+    const bool startsLater =
+        dict.found("timeStart")
+     && dict.get<scalar>("timeStart") > time_.value() + 0.5*time_.deltaTValue();
+
     // The objects the cloud registers with the mesh: those written with
     // the time are written again once the step is made
     const wordList before(mesh_.objectRegistry::sortedToc());
@@ -249,9 +319,10 @@ bool Foam::coagulation::coagulationCloudFunctionObject::read
             new coagulationCloud
             (
                 mesh_.lookupObjectRef<volVectorField>(UName),
-                "coagulationCloud",
+                cloudName,
                 true,
-                interval
+                interval,
+                !startsLater
             )
         );
     }
@@ -291,6 +362,15 @@ bool Foam::coagulation::coagulationCloudFunctionObject::read
             obj->writeOpt() = IOobject::NO_WRITE;
             cloudObjects_.append(objName);
         }
+    }
+    // The solver's fields the cloud reads that nothing writes (a readFields
+    // function object's): written with the cloud's times, so that a restart
+    // from any of them finds them
+    for (const word& fieldName : flowFields::of(mesh_).unwrittenLiveFields())
+    {
+        Info<< "    field " << fieldName << ": written with the cloud's"
+            << " times for restarts" << endl;
+        cloudObjects_.append(fieldName);
     }
     return true;
 }

@@ -66,6 +66,16 @@ Foam::coagulation::coagulationKernels::sum::readParts
         }
         const dictionary& part = e.dict();
         const word type(part.get<word>("type"));
+        if (type == typeName)
+        {
+            // The check of two parts of one type sees only this level: a
+            // nested sum could hold a mechanism the outer sum holds too
+            FatalIOErrorInFunction(part)
+                << "Entry '" << e.keyword() << "' in " << kernels.name()
+                << " is itself a sum: a sum inside a sum could count a"
+                << " mechanism twice." << nl << "    List its kernels in "
+                << kernels.name() << " instead" << nl << exit(FatalIOError);
+        }
         if (partOfType.found(type))
         {
             FatalIOErrorInFunction(kernels)

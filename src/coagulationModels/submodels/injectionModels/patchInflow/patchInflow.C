@@ -6,6 +6,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "patchInflow.H"
+#include "meshTools.H"
 #include "particleMaterial.H"
 #include "coagulationCloud.H"
 #include "caseChecks.H"
@@ -129,6 +130,11 @@ void Foam::coagulation::injectionModels::patchInflow::inject
     const fvMesh& mesh = U.mesh();
     const scalar W = cloud_.scaling().particleWeight();
     const pointField& points = mesh.points();
+    const volVectorField& C = mesh.C();
+
+    // The share of the way from the face to the cell centre at which a new
+    // particle is placed before it is tracked: inside the cell, off its face
+    constexpr scalar inset = 1e-6;
 
     for (const label patchi : patches_)
     {
@@ -189,12 +195,23 @@ void Foam::coagulation::injectionModels::patchInflow::inject
                   + a*(points[f[tri]] - fc)
                   + b*(points[f.nextLabel(tri)] - fc);
 
-                const point position = onFace + rng_.uniform()*dt*Uin;
-
+                // Placed just inside the owner cell, then moved by OpenFOAM's
+                // tracking over the distance travelled through the cells
+                // it crosses (within the mesh's solved directions); a
+                // boundary face on the way (a wall at the inlet's edge, where
+                // the owner cell's velocity points out of the mesh) ends the
+                // move there
+                const point start = onFace + inset*(C[owner] - onFace);
                 coagulationParticle* pPtr = new coagulationParticle
                 (
-                    mesh, position, owner, mass_, W
+                    mesh, start, owner, mass_, W
                 );
+                vector travelled = rng_.uniform()*dt*Uin;
+                meshTools::constrainDirection
+                (
+                    mesh, mesh.solutionD(), travelled
+                );
+                pPtr->track(travelled, 0);
                 cloud_.addParticle(pPtr);
                 cloud_.index().append(pPtr, pPtr->cell());
 

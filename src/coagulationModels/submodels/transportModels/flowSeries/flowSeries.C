@@ -45,6 +45,53 @@ Foam::autoPtr<Foam::volVectorField> Foam::coagulation::flowSeries::read
 }
 
 
+void Foam::coagulation::flowSeries::checkGaps() const
+{
+    // The velocity is linear between written times: a gap much longer than
+    // the series' spacing elsewhere (writes purged by purgeWrite, a run
+    // restarted later) would interpolate straight across changes the flow
+    // made in it. The spacing is the lower median of the intervals; a gap
+    // more than maxGapRatio of them is refused unless 'maxGap' allows it
+    const label n = times_.size() - 1;
+    if (n < 2)
+    {
+        return;
+    }
+    List<scalar> gaps(n);
+    forAll(gaps, i)
+    {
+        gaps[i] = times_[i + 1].value() - times_[i].value();
+    }
+    List<scalar> sorted(gaps);
+    Foam::sort(sorted);
+    const scalar spacing = sorted[(n - 1)/2];
+    const scalar maxGap =
+        dict_.getOrDefault<scalar>("maxGap", maxGapRatio*spacing);
+    if (!(maxGap > 0))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry 'maxGap' = " << maxGap << " in " << dict_.name()
+            << " must be a time > 0 [s]" << nl << exit(FatalIOError);
+    }
+    forAll(gaps, i)
+    {
+        if (gaps[i] > maxGap*(1 + 1e-9))
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Entry 'flowSeries' in " << dict_.name() << ": the flow"
+                << " case " << case_ << " has no written time between "
+                << times_[i].name() << " and " << times_[i + 1].name()
+                << ", a gap of " << gaps[i] << " s where its times are "
+                << spacing << " s apart elsewhere: the velocity would be"
+                << " interpolated straight across the gap." << nl
+                << "    Write the flow at even intervals (no purgeWrite), or"
+                << " accept the gap with 'maxGap " << gaps[i] << ";' in "
+                << dict_.name() << nl << exit(FatalIOError);
+        }
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::coagulation::flowSeries::flowSeries
@@ -135,13 +182,26 @@ Foam::coagulation::flowSeries::flowSeries
     }
     if (first < 0 || last < 0)
     {
+        // A flow run decomposed and never reconstructed holds its times in
+        // its processor folders alone
+        const bool decomposed =
+            !Pstream::parRun() && isDir(case_/"processor0");
         FatalIOErrorInFunction(dict)
             << "Entry 'flowSeries' in " << dict.name() << ": the flow case "
             << case_ << " has written times "
             << (all.size() ? all.first().name() + " to " + all.last().name()
                            : word("none"))
             << ", which do not cover this run's " << start << " to " << end
-            << nl << exit(FatalIOError);
+            << nl;
+        if (decomposed)
+        {
+            FatalIOError
+                << "    The flow case was run decomposed: its times are in"
+                << " its processor* folders. Run reconstructPar in it, or run"
+                << " this case decomposed the same way (decomposePar,"
+                << " -parallel)" << nl;
+        }
+        FatalIOError << exit(FatalIOError);
     }
     times_ = instantList(SubList<instant>(all, last - first + 1, first));
 
@@ -166,6 +226,7 @@ Foam::coagulation::flowSeries::flowSeries
                 << nl << exit(FatalIOError);
         }
     }
+    checkGaps();
     if (!holds("U", "transport"))
     {
         FatalIOErrorInFunction(dict)

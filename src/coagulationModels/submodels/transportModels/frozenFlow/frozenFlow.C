@@ -61,7 +61,7 @@ Foam::coagulation::transportModels::frozenFlow::frozenFlow
 {
     caseChecks::keywords
     (
-        dict, {"type", "interpolationSchemes", "maxCo", "flowSeries"}
+        dict, {"type", "interpolationSchemes", "maxCo", "flowSeries", "maxGap"}
     );
     // A flow series (its 'flowSeries' entry) is read by the cloud's
     // flowFields, with the submodels' fields

@@ -1,0 +1,124 @@
+#!/bin/bash
+# SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
+# OpenFOAM's own tutorials with particles, as a user would add them:
+#  1. pimpleFoam/RAS/TJunction (its inlet pressure ramped from a fluid at rest; fixed steps)
+#     with the coagulationCloud function object from timeStart 0.1, in one run: the velocity
+#     is checked at the population's first step, not at t = 0 where nothing flows in; the
+#     particles entering at the inlet's edges, where the owner cells' velocity points out of
+#     the mesh, are tracked from the face and never placed outside the mesh; balances closed;
+#  2. simpleFoam/pipeCyclic (a pipe sector whose sides are a rotational cyclicAMI pair; its
+#     coded swirl inlet given as cylindricalInletVelocity, since coded conditions are not
+#     compiled as root) -> coagulationFoam with the turbulent walk and sticking walls: the
+#     walk's displacement is rotated with the particle across the sides, so 100 steps end
+#     within the time limit (unrotated, a particle went back and forth across the sides:
+#     about 800 moves/s against 1.6 M); balances closed.
+. "$(dirname "$0")/caseLib.sh"
+
+# 1. TJunction, the function object from timeStart 0.1
+mkdir -p "$workDir"
+tj="$workDir/TJunction"
+openfoamTutorial incompressible/pimpleFoam/RAS/TJunction "$tj" || fail "no TJunction tutorial"
+cd "$tj"
+runApplication blockMesh
+setEntry . system/controlDict adjustTimeStep no
+setEntry . system/controlDict deltaT 2e-4
+setEntry . system/controlDict endTime 0.12
+setEntry . system/controlDict writeInterval 0.01
+foamDictionary system/controlDict -entry functions/particles \
+    -add "{ type coagulationCloud; libs (coagulationModels); timeStart 0.1; }" > /dev/null
+cat > constant/coagulationProperties <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object coagulationProperties; }
+algorithm       SWA;
+splitting       Strang;
+particles       { density 1800; massUnit 9.42e-22; }
+kernel          { type constant; K0 3e-11; }
+inception       { rate 0; mass 1; }
+inflow          { patches (inlet); density 1e12; mass 1; }
+statisticalWeight { n 1; V1 2e-11; }
+seed            1;
+sampling        { tRelax 0.1; sampleInterval 1e-3; }
+dispersion      { type turbulent; Sct 0.7; }
+patchInteraction { patches { defaultFaces stick; } }
+DICT
+rc=0; timeout 600 pimpleFoam > log.pimpleFoam 2>&1 || rc=$?
+[ "$rc" -eq 0 ] || { grep -A8 "FOAM FATAL" log.pimpleFoam | head -20; fail "TJunction: pimpleFoam exit $rc"; }
+checkBalance log.pimpleFoam
+grep -q "The velocity is checked at the population's first step" log.pimpleFoam \
+    || fail "TJunction: the velocity was checked at the start"
+n=$(grep -c "outside of the mesh" log.pimpleFoam || true)
+[ "$n" -eq 0 ] || fail "TJunction: $n particles placed outside the mesh"
+particles=$(grep "coagulationCloud particles: time 0.12," log.pimpleFoam | sed 's/.*particles = //')
+[ "${particles:-0}" -gt 1000 ] || fail "TJunction: ${particles:-no} particles at 0.12"
+echo "ok TJunction: the function object from timeStart 0.1 in one run, $particles particles at 0.12, none placed outside the mesh"
+
+# 2. pipeCyclic: the converged flow, then the particles with the walk
+pc="$workDir/pipeCyclic"
+rm -rf "$pc" && mkdir -p "$pc"
+openfoamTutorial incompressible/simpleFoam/pipeCyclic "$pc/flow" || fail "no pipeCyclic tutorial"
+cd "$pc/flow"
+"$COAGULATIONFOAM_PYTHON" - <<'PY'
+# the coded swirl (U = (1, 2 Cf x (1 0 0)), a rotation of -2 rad/s about x) as OpenFOAM's
+# cylindricalInletVelocity: -2 rad/s = -60/pi rpm
+import re
+s = open("0.orig/U").read()
+i = s.index("    inlet\n")
+j = s.index("    }\n", s.index("#};", i)) + 6
+s = s[:i] + """    inlet
+    {
+        type            cylindricalInletVelocity;
+        axis            (1 0 0);
+        origin          (0 0 0);
+        axialVelocity   constant 1;
+        radialVelocity  constant 0;
+        rpm             constant -19.098593171027442;
+        value           $internalField;
+    }
+""" + s[j:]
+open("0.orig/U", "w").write(s)
+PY
+runApplication blockMesh
+runApplication topoSet
+runApplication refineHexMesh c0 -overwrite
+rm -rf 0 && cp -r 0.orig 0
+runApplication simpleFoam
+latest=$(foamListTimes -latestTime -noZero)
+[ -n "$latest" ] || fail "pipeCyclic: simpleFoam wrote no time"
+cd "$pc"
+cp -r flow/constant flow/system .
+rm -rf constant/polyMesh/sets
+mkdir 0 && for f in U nut k epsilon p; do cp "flow/$latest/$f" 0/; done
+cat > constant/coagulationProperties <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object coagulationProperties; }
+algorithm       SWA;
+splitting       Strang;
+particles       { density 1800; massUnit 9.42e-22; }
+kernel          { type constant; K0 3e-11; }
+inception       { rate 0; mass 1; }
+inflow          { patches (inlet); density 1e12; mass 1; }
+statisticalWeight { n 1; V1 2e-11; }
+seed            1;
+sampling        { tRelax 0.5; sampleInterval 0.01; }
+dispersion      { type turbulent; Sct 0.7; }
+patchInteraction { patches { walls stick; } }
+DICT
+cat > system/controlDict <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object controlDict; }
+application     coagulationFoam;
+libs            (turbulenceModels incompressibleTurbulenceModels);
+startFrom       latestTime;
+startTime       0;
+stopAt          endTime;
+endTime         1;
+deltaT          0.01;
+writeControl    timeStep;
+writeInterval   50;
+writeFormat     binary;
+runTimeModifiable false;
+DICT
+rc=0; timeout 120 coagulationFoam > log.coagulationFoam 2>&1 || rc=$?
+[ "$rc" -ne 124 ] || fail "pipeCyclic: 100 steps with the walk did not end within 120 s"
+[ "$rc" -eq 0 ] || { grep -A8 "FOAM FATAL" log.coagulationFoam | head -20; fail "pipeCyclic: exit $rc"; }
+checkBalance log.coagulationFoam
+grep "particle moves per second\|held at a face" log.coagulationFoam | tail -2
+echo "ok pipeCyclic: 100 steps with the turbulent walk across the rotational cyclicAMI sides"
+echo "PASS openfoamTutorials"
