@@ -163,3 +163,24 @@ def test_cell_order_ignores_round_off_of_the_centres():
     assert list(report.cell_order([(0.2, 0, 0), (0.1, 1, 0)])) == [1, 0]
     assert list(report.cell_order([(1.0, 2.0, 3.0)])) == [0]
     assert list(report.cell_order([(1.0, 2.0, 3.0)] * 2)) == [0, 1]
+
+
+def test_function_object_without_its_library(tmp_path):
+    """A flow solver whose controlDict names the coagulationCloud type but loads no
+    coagulationModels ran without particles: the missing samples say why."""
+    os.makedirs(os.path.join(tmp_path, "system"))
+    control = os.path.join(tmp_path, "system", "controlDict")
+    fo = "functions\n{\n    particles\n    {\n        type coagulationCloud;%s\n    }\n}\n"
+    open(control, "w").write(fo % "  // libs (coagulationModels);")
+    with pytest.raises(samples.InputError, match="no 'libs .coagulationModels.;'"):
+        samples.RunReader().read(str(tmp_path))
+    for libs in ("\n        libs (coagulationModels);", "\n        libs (\"libcoagulationModels.so\");"):
+        open(control, "w").write(fo % libs)
+        with pytest.raises(samples.InputError) as e:
+            samples.RunReader().read(str(tmp_path))
+        assert "libs" not in str(e.value)
+    # the library loaded for the whole case
+    open(control, "w").write("libs (coagulationModels);\n" + fo % "")
+    with pytest.raises(samples.InputError) as e:
+        samples.RunReader().read(str(tmp_path))
+    assert "libs" not in str(e.value)

@@ -9,9 +9,11 @@ cell and moment k, over the samples with t_relax <= t <= t_end (pooled over the
 realisations given with --realisations), the sample mean, sd, count, 95 %
 half-width of the mean and the normalised sd sqrt(n var(M_k)) / m_k,
 against the analytic duct reference of the kernel (Patterson & Wagner eqs 39-45,
-50).  A thin command line over the package coagulationPost in
-<repo>/src/python (samples, statistics, analytic, report, plots, checks), whose
-documentation gives the file layout and the merging rules.
+50) where the samples describe the paper's duct case (--analytic auto: a constant
+or additive kernel, inception, masses in units of the incepted particle's, no
+growth; else none, and a line says why).  A thin command line over the package
+coagulationPost in <repo>/src/python (samples, statistics, analytic, report,
+plots, checks), whose documentation gives the file layout and the merging rules.
 
 Outputs in --out (resolved against --case when relative):
   moments.csv        x, Mk_mean, Mk_ci95 for k = 0..3
@@ -38,7 +40,8 @@ t_{0.975,R-1} sd(realisation means) / sqrt(R).  See coagulationPost.statistics.
   summary.json       run attributes, time window, files, realisations
 
 Exit status: 0 success, 1 a --check / --check-value failed, 2 bad input
-(no sample files, missing dataset, inconsistent files, bad options).
+(no sample files, missing dataset, inconsistent files, bad options: also a
+number that makes no sense, such as a density that is not positive and finite).
 
 Examples:
   coagulationReport.py --case tutorials/constantDuct --check \\
@@ -50,6 +53,7 @@ Examples:
 """
 
 import argparse
+import math
 import os
 import re
 import sys
@@ -59,6 +63,69 @@ from coagulationPost import analytic, checks, maps, plots, psd, report
 from coagulationPost.samples import InputError
 
 EXIT_OK, EXIT_CHECK_FAILED, EXIT_INPUT = 0, 1, 2
+
+
+# argparse types of the options' numbers: a value that makes no sense (NaN, infinite, a density
+# or a speed not above zero, ...) is refused by argparse, one line naming the option, the value
+# and what is expected, exit status 2
+
+def number(expected, low=None, strict=True):
+    """A finite float, greater than low (strict) or at least low; otherwise refused with
+    '<text> is not <expected>'."""
+    def parse(text):
+        try:
+            v = float(text)
+        except ValueError:
+            v = math.nan
+        if not math.isfinite(v) or (low is not None and (v <= low if strict else v < low)):
+            raise argparse.ArgumentTypeError("%s is not %s" % (text, expected))
+        return v
+    return parse
+
+
+def positive(expected):
+    return number("a positive finite " + expected, 0.0)
+
+
+def whole_number(text):
+    """An integer >= 0 (a count, a moment order)."""
+    try:
+        v = int(text)
+    except ValueError:
+        v = -1
+    if v < 0:
+        raise argparse.ArgumentTypeError("%s is not a whole number >= 0" % text)
+    return v
+
+
+def moment_list(text):
+    """'0,1,3' -> [0, 1, 3]."""
+    try:
+        orders = [int(t) for t in text.split(",") if t.strip()]
+    except ValueError:
+        orders = [-1]
+    if not orders or min(orders) < 0:
+        raise argparse.ArgumentTypeError(
+            "%s is not a comma-separated list of moment orders >= 0 (0,1,2,3)" % text)
+    return orders
+
+
+def bin_range(text):
+    """'A:B' -> (A, B), 1 <= A <= B."""
+    try:
+        a, b = (int(v) for v in text.split(":"))
+    except ValueError:
+        a, b = 0, 0
+    if not 1 <= a <= b:
+        raise argparse.ArgumentTypeError(
+            "%s is not A:B with 1 <= A <= B (the first and last bins, 1-based)" % text)
+    return a, b
+
+
+def analytic_kind(text):
+    """--analytic: auto, none, a reference's name, or the name of its kernel (constant,
+    additive)."""
+    return analytic.kind_for_kernel(text) or text
 
 
 def parse_args(argv):
@@ -71,19 +138,26 @@ def parse_args(argv):
     p.add_argument("--realisations", nargs="+", metavar="DIR",
                    help="several case directories (independent seeds) whose samples are pooled; "
                         "replaces --case as the data source")
-    p.add_argument("--t-relax", type=float, default=None,
+    p.add_argument("--t-relax", type=number("a finite time [s]"), default=None,
                    help="first sample time used (default: the files' tRelax attribute)")
-    p.add_argument("--t-end", type=float, default=None, help="last sample time used (default: all)")
-    p.add_argument("--u", type=float, default=None,
+    p.add_argument("--t-end", type=number("a finite time [s]"), default=None,
+                   help="last sample time used (default: all)")
+    p.add_argument("--u", type=positive("speed [m/s]"), default=None,
                    help="advection speed of the analytic duct (default: attribute u, else 1.0)")
-    p.add_argument("--x-inlet", type=float, default=0.0,
+    p.add_argument("--x-inlet", type=number("a finite position [m]"), default=0.0,
                    help="x of the duct inlet, where the analytic moments vanish (default 0)")
     p.add_argument("--out", default="results",
                    help="output folder; a relative path is taken inside --case (default: results)")
-    p.add_argument("--analytic", default="auto",
+    p.add_argument("--analytic", default="auto", type=analytic_kind,
                    choices=("auto",) + analytic.KINDS + ("none",),
-                   help="analytic reference (auto: from the kernel attribute)")
-    p.add_argument("--correlation-time", type=float, default=None, metavar="T",
+                   help="analytic reference: auto (default) the duct reference of the kernel "
+                        "where the samples describe the paper's duct case (a constant or "
+                        "additive kernel, inception, masses in units of the incepted "
+                        "particle's, no growth), else none and why; none; or a reference "
+                        "(constantDuct or constant, additiveDuct or additive) whatever the "
+                        "case")
+    p.add_argument("--correlation-time", type=number("a finite time >= 0 [s]", 0.0, False),
+                   default=None, metavar="T",
                    help="one run's interval: the autocorrelation sum spans at least T seconds "
                         "(default: the residence time (x - x_inlet)/u upstream of the cell; "
                         "0: Sokal's automatic window alone)")
@@ -105,37 +179,42 @@ def parse_args(argv):
                         "no NAME: every one found")
     p.add_argument("--psd-compare", metavar="DIR", default=None,
                    help="a second case whose PSD of the same NAME is plotted beside")
-    p.add_argument("--density", type=float, default=None, metavar="RHO",
+    p.add_argument("--density", type=positive("density in kg/m3"), default=None,
+                   metavar="RHO",
                    help="the particles' density [kg/m3] for the diameters: the PSD's plot in "
                         "diameter (sizeDistributionDiameter.png), the maps' and lines' "
                         "diameter of the mean mass (default: the case's 'particles')")
-    p.add_argument("--mass-unit", type=float, default=None, metavar="KG",
+    p.add_argument("--mass-unit", type=positive("mass unit in kg"), default=None,
+                   metavar="KG",
                    help="kg per unit of the particles' masses (default: the case's "
                         "'particles' massUnit, else 1)")
     g = p.add_argument_group("checks (exit 1 on failure)")
     g.add_argument("--check", action="store_true",
                    help="compare every cell mean with the analytic cell average")
-    g.add_argument("--check-rel-tol", type=float, default=0.03,
+    g.add_argument("--check-rel-tol", type=positive("relative tolerance"), default=0.03,
                    help="--check: largest allowed |mean - analytic|/analytic (default 0.03)")
-    g.add_argument("--check-sigma", type=float, default=None, metavar="Z",
+    g.add_argument("--check-sigma", type=positive("number of standard errors"), default=None,
+                   metavar="Z",
                    help="--check: a cell moment outside --check-rel-tol fails only if it is also "
                         "more than Z standard errors (ci95/1.96) off (default: the tolerance "
                         "alone)")
-    g.add_argument("--check-skip-cells", type=int, default=0,
+    g.add_argument("--check-skip-cells", type=whole_number, default=0,
                    help="--check: ignore this many cells at the inlet (default 0)")
-    g.add_argument("--check-moments", type=lambda s: [int(t) for t in s.split(",") if t.strip()],
-                   default=None, help="--check: comma-separated moment orders (default: all)")
+    g.add_argument("--check-moments", type=moment_list, default=None,
+                   help="--check: comma-separated moment orders (default: all)")
     g.add_argument("--check-cell-index", type=int, action="append", metavar="I",
                    help="cell index (sorted by x; negative counts from the outlet) of a "
                         "--check-value; once for all values or once per value")
-    g.add_argument("--check-moment", type=int, action="append", metavar="K",
+    g.add_argument("--check-moment", type=whole_number, action="append", metavar="K",
                    help="moment order of a --check-value; once for all or once per value")
-    g.add_argument("--check-value", type=float, action="append", metavar="V",
+    g.add_argument("--check-value", type=number("a finite number"), action="append",
+                   metavar="V",
                    help="expected cell mean; repeatable")
-    g.add_argument("--check-value-rel-tol", type=float, action="append", metavar="TOL",
+    g.add_argument("--check-value-rel-tol", type=positive("relative tolerance"),
+                   action="append", metavar="TOL",
                    help="relative tolerance of a --check-value; once for all or once per value "
                         "(default 0.01)")
-    g.add_argument("--check-psd-bins", metavar="A:B", default=None,
+    g.add_argument("--check-psd-bins", type=bin_range, metavar="A:B", default=None,
                    help="check the PSD bins A..B (1-based, inclusive) at every region against "
                         "the exact distribution: at least 85 %% inside the 95 %% intervals, "
                         "none beyond 4 half-widths/1.96")
@@ -164,10 +243,6 @@ def parse_args(argv):
     for a, b in args.lines:
         if a == b:
             p.error("--line: the two points are the same (%g %g %g)" % tuple(a))
-    if args.check_skip_cells < 0:
-        p.error("--check-skip-cells must be >= 0")
-    if args.check_rel_tol <= 0:
-        p.error("--check-rel-tol must be > 0")
 
     # single-value checks: --check-cell-index / --check-moment / --check-value-rel-tol
     # given once apply to every --check-value, otherwise once per value, in order
@@ -204,9 +279,12 @@ def parse_slice(text):
     if axis.strip() not in ("x", "y", "z") or not value.strip():
         raise ValueError("--slice %s: give AXIS=VALUE with AXIS x, y or z (z=0.025)" % text)
     try:
-        return "xyz".index(axis.strip()), float(value)
+        v = float(value)
     except ValueError:
         raise ValueError("--slice %s: %s is not a number" % (text, value)) from None
+    if not math.isfinite(v):
+        raise ValueError("--slice %s: %s is not a finite number" % (text, value))
+    return "xyz".index(axis.strip()), v
 
 
 def parse_point(text):
@@ -216,18 +294,18 @@ def parse_point(text):
         point = [float(v) for v in parts]
     except ValueError:
         point = []
-    if len(point) != 3:
-        raise ValueError("--line %s: a point is three numbers, '(x y z)' or x,y,z"
-                         % text.strip())
+    if len(point) != 3 or not all(math.isfinite(v) for v in point):
+        raise ValueError("--line %s: a point is three numbers, '(x y z)' or x,y,z, each "
+                         "finite" % text.strip())
     return point
 
 
 def material(args, res):
     """(density, kg per mass unit) for the maps' and lines' diameters: --density and
     --mass-unit, else the samples' attributes (the case's 'particles'); None without a
-    density."""
-    density = args.density or res["meta"].get("density")
-    unit = args.mass_unit or res["meta"].get("massUnit") or 1.0
+    density. The options' values are positive (parse_args) and never replaced."""
+    density = args.density if args.density is not None else res["meta"].get("density")
+    unit = args.mass_unit if args.mass_unit is not None else res["meta"].get("massUnit") or 1.0
     return (density, unit) if density else None
 
 
@@ -280,8 +358,11 @@ def report_sections(args, res, out, dims):
     return written
 
 
-def report_psd(args, out, u, written):
-    """The size distributions of --psd: CSV of the averages, plots, checks."""
+def report_psd(args, res, out, u, written):
+    """The size distributions of --psd: CSV of the averages, plots, checks. The exact
+    distribution as --analytic says: auto where the moment report has a reference and the
+    distribution's attributes describe the paper's duct too (else a line says why), none
+    with none, wherever there is one with a reference named."""
     names = args.psd or psd.function_names(args.case)
     if not names:
         raise InputError("--psd: no size distribution under %s/postProcessing" % args.case)
@@ -290,7 +371,15 @@ def report_psd(args, out, u, written):
         p = psd.read(args.case, name)
         mean, neff, ci, tau = psd.average(p, u=u, x_inlet=args.x_inlet,
                                           correlation_time=args.correlation_time)
-        ref = psd.exact(p, u, args.x_inlet)
+        why = None
+        if args.analytic == "none":
+            why = "--analytic none"
+        elif args.analytic == "auto":
+            why = res["meta"].get("analyticMismatch") or analytic.not_the_papers_duct(p["attrs"])
+            if why:
+                print("PSD %s: no exact distribution: %s" % (name, why))
+        reference = why is None
+        ref = psd.exact(p, u, args.x_inlet) if reference else None
         path = os.path.join(out, "sizeDistribution_%s.csv" % name)
         with open(path, "w") as f:
             f.write("region,name,x,column,mean,neff,tauInt,ci95,exact\n")
@@ -307,18 +396,23 @@ def report_psd(args, out, u, written):
                 runs.append(psd.read(args.psd_compare, name))
                 labels.append(os.path.basename(os.path.abspath(args.psd_compare)))
             d = os.path.join(out, name)
-            written += psd.figures(runs, d, u, args.x_inlet, labels)
+            written += psd.figures(runs, d, u, args.x_inlet, labels, reference)
             more = psd.diameter_figure(runs, d, u, args.x_inlet, labels, args.density,
-                                       args.mass_unit)
+                                       args.mass_unit, reference)
             if not more:
                 print("PSD %s: no particle density (give the case 'particles { density ...; }'"
                       " or --density): no plot in diameter" % name)
             written += more
         if args.check_psd_bins:
-            a, b = (int(v) for v in args.check_psd_bins.split(":"))
+            a, b = args.check_psd_bins
             if ref is None:
-                raise InputError("--check-psd-bins: no exact distribution for kernel %s"
-                                 % p["attrs"].get("kernel"))
+                raise InputError("--check-psd-bins: no exact distribution (%s)"
+                                 % (why or "kernel %s, bins %s of %g to %g"
+                                    % (p["attrs"].get("kernel"), p["binType"], p["edges"][0],
+                                       p["edges"][-1])))
+            if b > p["nBins"]:
+                raise InputError("--check-psd-bins %d:%d: %s has %d bins"
+                                 % (a, b, name, p["nBins"]))
             good, _, lines = psd.check(p, ref, list(range(a - 1, b)), mean, ci)
             print("\n".join("PSD %s: %s" % (name, l) for l in lines))
             ok = ok and good
@@ -366,7 +460,7 @@ def main(argv=None):
                                        args.check_moments, args.analytic, args.check_sigma)
         ok = checks.check_values(res, args.value_checks) and ok
         if args.psd is not None:
-            ok = report_psd(args, out, res["meta"]["u"], written) and ok
+            ok = report_psd(args, res, out, res["meta"]["u"], written) and ok
     except InputError as e:
         print("coagulationReport: error: %s" % e, file=sys.stderr)
         return EXIT_INPUT

@@ -36,9 +36,16 @@ profile(kind, x, I, K0, u)              kind in KINDS
 cell_edges(centres, x_inlet)            cell faces from 1-D cell centres
 cell_average(kind, lo, hi, I, K0, u)    mean of the profile over [lo, hi]
 kind_for_kernel(kernel)                 "constant" -> "constantDuct", ...
+not_the_papers_duct(attrs)              why samples' attributes describe another case, or None
+
+The references hold for the paper's duct case alone: particles of unit mass incepted at the
+rate I (> 0) everywhere, coagulating with the constant or additive kernel of K0 >= 0, nothing
+growing, shrinking or lost, advected along x with the uniform speed u.
 """
 
 import numpy as np
+
+from .samples import GROWTH_TOTALS
 
 N_MOMENTS = 4
 KINDS = ("constantDuct", "additiveDuct")
@@ -54,6 +61,49 @@ def kind_for_kernel(kernel):
     if kernel is None:
         return None
     return _KERNEL_TO_KIND.get(str(kernel).strip().lower())
+
+
+def not_the_papers_duct(attrs):
+    """Why a run whose samples carry the attributes `attrs` (a dict: the moment samples' or a
+    size distribution's) is not the paper's duct case that the references assume, or None
+    where none of them says so. In this order: a kernel without a reference; no inception
+    rate > 0; a K0 not finite and >= 0; growth or shrinking (GROWTH_TOTALS not 0); masses in
+    kg (a density with massUnit 1 kg: the incepted particles' mass is then a physical one,
+    not the unit of mass). Not in the attributes, so not checked: the inception's mass and
+    extent (a zone, a field) and the flow."""
+    kernel = attrs.get("kernel")
+    if kernel is None:
+        return "the samples lack the attribute 'kernel'"
+    if kind_for_kernel(kernel) is None:
+        return "the kernel is '%s' (the references': constant or additive)" % kernel
+
+    def number(key):
+        try:
+            return float(attrs[key])
+        except (TypeError, ValueError):
+            return np.nan
+
+    for key in ("inceptionRate", "K0"):
+        if key not in attrs:
+            return "the samples lack the attribute '%s'" % key
+    rate, K0 = number("inceptionRate"), number("K0")
+    if not (np.isfinite(rate) and rate > 0):
+        return "the case has no inception (inceptionRate %g)" % rate
+    if not (np.isfinite(K0) and K0 >= 0):
+        return "the kernel's K0 is %g" % K0
+    grown = number("grownMass") if "grownMass" in attrs else 0.0
+    if grown != 0:
+        return "the case has growth (grown mass %g)" % grown
+    lost = {k: number(k) for k in GROWTH_TOTALS[1:] if k in attrs}
+    if any(v != 0 for v in lost.values()):
+        return "the case loses particles to shrinking (%s)" % ", ".join(
+            "%s %g" % kv for kv in lost.items())
+    density = number("density") if "density" in attrs else 0.0
+    unit = number("massUnit") if "massUnit" in attrs else 1.0
+    if density > 0 and unit == 1.0:
+        return ("the particles' masses are in kg (density %g kg/m3, massUnit 1 kg), the "
+                "references' in units of the incepted particle's mass" % density)
+    return None
 
 
 def mass_moment(x, I, u=1.0):

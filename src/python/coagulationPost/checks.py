@@ -36,8 +36,11 @@ def check_analytic(res, rel_tol=0.03, skip_cells=0, moments=None, analytic_optio
     nm = res["mean"].shape[1]
     ncell = len(res["x"])
     if res["meta"]["analytic"] is None:
-        raise InputError("--check needs an analytic reference (kernel '%s', --analytic %s)"
-                         % (res["meta"]["kernel"], analytic_option))
+        why = res["meta"].get("analyticMismatch")
+        raise InputError("--check needs an analytic reference (kernel '%s', --analytic %s)%s"
+                         % (res["meta"]["kernel"], analytic_option,
+                            ": %s; --analytic KIND draws one whatever the case" % why
+                            if why and analytic_option == "auto" else ""))
     if moments is None:
         moments = list(range(min(nm, analytic.N_MOMENTS)))
     for k in moments:

@@ -160,7 +160,10 @@ def exact(psd, u=1.0, x_inlet=0.0, K=None):
     box; the point itself without regions.csv), for the constant and additive
     kernels.  Integer bins: n_k; log bins: the sum of n_k over the integer sizes in
     the bin, NaN for bins above the largest size computed (K, default the bins'
-    top, at most 4096).  Returns [regions][bins]."""
+    top, at most 4096), None where no bin holds an integer size (bins far below one
+    mass unit, masses in kg; bins between two sizes).  Returns [regions][bins].
+    Whether the case is the paper's duct, which the distribution assumes, is the
+    caller's to decide (analytic.not_the_papers_duct)."""
     kernel = str(psd["attrs"].get("kernel", "")).lower()
     if kernel not in ("constant", "additive"):
         return None
@@ -175,14 +178,16 @@ def exact(psd, u=1.0, x_inlet=0.0, K=None):
         K = psd["nBins"]
         return analytic.duct_sizes(kernel, lo, hi, K, I, K0, u, x_inlet)
     Kmax = int(min(np.floor(edges[-1]), 4096)) if K is None else int(K)
+    sizes = np.arange(1, max(Kmax, 0) + 1)
+    # the integer sizes in each bin below the largest size computed
+    inside = {b: (sizes >= edges[b]) & (sizes < edges[b + 1])
+              for b in range(len(edges) - 1) if edges[b + 1] <= Kmax + 1}
+    if not any(v.any() for v in inside.values()):
+        return None
     n = analytic.duct_sizes(kernel, lo, hi, Kmax, I, K0, u, x_inlet)
-    sizes = np.arange(1, Kmax + 1)
     out = np.full((len(lo), len(edges) - 1), np.nan)
-    for b in range(len(edges) - 1):
-        if edges[b + 1] > Kmax + 1:
-            continue
-        inside = (sizes >= edges[b]) & (sizes < edges[b + 1])
-        out[:, b] = n[:, inside].sum(axis=1)
+    for b, v in inside.items():
+        out[:, b] = n[:, v].sum(axis=1)
     return out
 
 
@@ -210,11 +215,11 @@ def check(psd, ref, bins, mean, ci, z_max=4.0, frac_min=0.85):
     return ok, z, lines
 
 
-def figures(runs, out, u=1.0, x_inlet=0.0, labels=None):
+def figures(runs, out, u=1.0, x_inlet=0.0, labels=None, reference=True):
     """PSD at every region of each run, one column per run (two runs side by side),
     one row per region: time-averaged number density per bin with its 95 % interval
-    against the exact distribution where there is one.  PNG files in out; returns
-    their paths."""
+    against the exact distribution where there is one (none without `reference`).  PNG
+    files in out; returns their paths."""
     from .plots import _pyplot
     plt = _pyplot()
     os.makedirs(out, exist_ok=True)
@@ -223,7 +228,7 @@ def figures(runs, out, u=1.0, x_inlet=0.0, labels=None):
                              squeeze=False, sharey="row")
     for j, p in enumerate(runs):
         mean, _, ci, _ = average(p, u=u, x_inlet=x_inlet)
-        ref = exact(p, u, x_inlet)
+        ref = exact(p, u, x_inlet) if reference else None
         B = p["nBins"]
         e = p["edges"]
         centre = np.arange(1, B + 1) if p["binType"] == "integer" else np.sqrt(e[1:] * e[:-1])
@@ -368,10 +373,12 @@ def size_statistics(d, n, lower=None, upper=None):
     return cmd, gmd, sg
 
 
-def diameter_figure(runs, out, u=1.0, x_inlet=0.0, labels=None, density=None, mass_unit=None):
+def diameter_figure(runs, out, u=1.0, x_inlet=0.0, labels=None, density=None, mass_unit=None,
+                    reference=True):
     """dN/dlog10 d against d [nm] of every region of each run on one figure per run (side by
-    side), 95 % intervals as bands, the exact distribution as lines where there is one, the
-    count median and geometric mean diameters and sigma_g of each region in the legend.
+    side), 95 % intervals as bands, the exact distribution as lines where there is one (none
+    without `reference`), the count median and geometric mean diameters and sigma_g of each
+    region in the legend.
     The density and mass unit: the arguments, else the run's ('particles'); a run without
     either is left out.  Writes sizeDistributionDiameter.png and the plotted arrays as
     sizeDistributionDiameter.csv (run, region, x, bin, d_nm, dNdlog10d, ci95, exact);
@@ -379,8 +386,9 @@ def diameter_figure(runs, out, u=1.0, x_inlet=0.0, labels=None, density=None, ma
     from .plots import _pyplot
     shown = []
     for j, p in enumerate(runs):
-        rho = density if density else float(p["attrs"].get("density", 0) or 0)
-        unit = mass_unit if mass_unit else float(p["attrs"].get("massUnit", 1) or 1)
+        # the values given win over the run's; a run without 'particles' has density 0
+        rho = density if density is not None else float(p["attrs"].get("density", 0) or 0)
+        unit = mass_unit if mass_unit is not None else float(p["attrs"].get("massUnit", 1) or 1)
         if rho > 0:
             shown.append((j, p, rho, unit))
     if not shown:
@@ -392,7 +400,7 @@ def diameter_figure(runs, out, u=1.0, x_inlet=0.0, labels=None, density=None, ma
     for a, (j, p, rho, unit) in enumerate(shown):
         ax = axes[0, a]
         mean, _, ci, _ = average(p, u=u, x_inlet=x_inlet)
-        ref = exact(p, u, x_inlet)
+        ref = exact(p, u, x_inlet) if reference else None
         B = p["nBins"]
         d, lo, hi, dlog = diameter_bins(p, rho, unit)
         nm = 1e9 * d

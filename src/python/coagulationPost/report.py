@@ -169,20 +169,28 @@ def compute(cases, t_relax=None, t_end=None, u=None, x_inlet=0.0, analytic_kind=
         "realisations": len(runs),
         "density": num("density"),
         "massUnit": num("massUnit"),
+        "growthTotals": growth_totals(runs),
         "interval": interval,
         "runs": runs,
     }
 
-    # analytic reference
+    # analytic reference: by default (auto) the duct reference of the kernel where the runs
+    # are the paper's duct case, none elsewhere, and why; a kind given is drawn whatever the
+    # case, with a warning where the runs are not that case
+    why = analytic.not_the_papers_duct({**ref, **meta["growthTotals"]}) or lighter_than_unit(
+        acc.mean[order], centres)
+    meta["analyticMismatch"] = why
     kind = analytic_kind
     if kind == "auto":
-        kind = analytic.kind_for_kernel(meta["kernel"])
-        if kind is None:
-            print("no analytic reference for kernel '%s'" % meta["kernel"])
+        kind = None if why else analytic.kind_for_kernel(meta["kernel"])
+        if why:
+            print("no analytic reference: %s" % why)
     elif kind == "none":
         kind = None
     elif analytic.kind_for_kernel(meta["kernel"]) not in (None, kind):
         warn("--analytic %s but the runs used the '%s' kernel" % (kind, meta["kernel"]))
+    elif why:
+        warn("--analytic %s although %s" % (kind, why))
     if kind is not None:
         for key in ("inceptionRate", "K0"):
             if meta[key] is None:
@@ -210,6 +218,33 @@ def compute(cases, t_relax=None, t_end=None, u=None, x_inlet=0.0, analytic_kind=
         "rel": rel, "nsd": nsd, "edges": (lo, hi), "meanMass": mean_mass,
         "meanMassCi": mean_mass_ci,
     }
+
+
+def growth_totals(runs):
+    """The growth totals of runs (RunReader.read's info): of each the value of largest
+    magnitude."""
+    out = {}
+    for r in runs:
+        for key, v in r.get("growthTotals", {}).items():
+            if key not in out or abs(v) > abs(out[key]):
+                out[key] = v
+    return out
+
+
+def lighter_than_unit(mean, centres, below=0.5):
+    """Why the cell means [cells][moments] cannot be the paper's duct, or None: particles of
+    unit mass and heavier have M1 >= M0 in every sample, so a mean mass M1/M0 below `below`
+    in a cell says the masses are in another unit (kg) than the incepted particle's."""
+    if mean.shape[1] < 2:
+        return None
+    with np.errstate(invalid="ignore", divide="ignore"):
+        ratio = np.where(mean[:, 0] > 0, mean[:, 1] / mean[:, 0], np.nan)
+    light = np.nonzero(ratio < below)[0]
+    if not light.size:
+        return None
+    i = light[np.argmin(ratio[light])]
+    return ("the particles are lighter than the incepted unit of mass of the references (mean "
+            "mass M1/M0 %.4g in the cell at x = %.6g; masses in kg?)" % (ratio[i], centres[i, 0]))
 
 
 def mean_mass_interval(data, mean, min_window):

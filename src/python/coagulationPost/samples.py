@@ -6,7 +6,9 @@
 each holding /cellCentres [nCells][3], /time [nSamples],
 /moments [nSamples][nCells][nMoments] (M_{n,k} of Patterson & Wagner eq. 37)
 and the root attributes n, V1, K0, inceptionRate, seed, splitDeltaT,
-sampleInterval, tRelax, algorithm, kernel.
+sampleInterval, tRelax, particleWeight, algorithm, kernel, with the case's
+'particles' density and massUnit, and the growth totals of GROWTH_TOTALS
+(each file's since its run started, 0 without growth).
 
 Files of one run hold disjoint cell sets (processors) and/or different time
 ranges (restarts).  Cells are merged by centre; where several files hold the
@@ -20,6 +22,7 @@ runs; realisation_dirs lists them.
 
 import glob
 import os
+import re
 import sys
 
 import numpy as np
@@ -28,6 +31,9 @@ SAMPLE_DIR = os.path.join("postProcessing", "coagulationSamples")
 DATASETS = ("cellCentres", "time", "moments")
 # attributes that must agree between all files that are pooled
 MUST_AGREE = ("n", "V1", "K0", "inceptionRate", "algorithm", "kernel")
+# what growth added to sum(w m) (negative: took), and the computational particles, their
+# number and mass that shrinking removed
+GROWTH_TOTALS = ("grownMass", "lostParticles", "lostNumber", "lostMass")
 
 
 class InputError(Exception):
@@ -73,9 +79,30 @@ def find_sample_files(case):
     files = sorted(set(glob.glob(os.path.join(d, "*.h5"))
                        + glob.glob(os.path.join(d, "**", "*.h5"), recursive=True)))
     if not files:
-        raise InputError("no HDF5 sample file found: %s/*.h5 does not exist or is empty"
-                         % d)
+        why = unloaded_function_object(case)
+        raise InputError("no HDF5 sample file found: %s/*.h5 does not exist or is empty%s"
+                         % (d, "; " + why if why else ""))
     return files
+
+
+def unloaded_function_object(case):
+    """Why a flow solver ran a case's coagulationCloud function object without particles, or
+    None: its system/controlDict names the type but loads no library coagulationModels (in a
+    'libs' entry of the function object or of the controlDict), so OpenFOAM only warned
+    'Unknown function type coagulationCloud' and ran the flow alone."""
+    try:
+        text = open(os.path.join(case, "system", "controlDict")).read()
+    except OSError:
+        return None
+    text = re.sub(r"//[^\n]*|/\*.*?\*/", "", text, flags=re.S)
+    if not re.search(r"\btype\s+coagulationCloud\s*;", text):
+        return None
+    if any("coagulationModels" in libs
+           for libs in re.findall(r"\b(?:libs|functionObjectLibs)\s*\(([^)]*)\)", text)):
+        return None
+    return ("system/controlDict has a coagulationCloud function object but no "
+            "'libs (coagulationModels);': OpenFOAM ran the flow without it (its log says "
+            "'Unknown function type coagulationCloud'). Add the entry to the function object")
 
 
 def read_sample_file(path):
@@ -251,6 +278,15 @@ class RunReader:
         seeds = sorted({fd["attrs"].get("seed") for fd in files if fd["attrs"].get("seed") is not None},
                        key=str)
         t_all = np.concatenate([fd["times"] for fd in files])
+        # the growth totals: of each the value of largest magnitude over the files (each
+        # processor's and run start's own), so that growth booked in any file shows
+        growth = {}
+        for fd in files:
+            for key in GROWTH_TOTALS:
+                v = fd["attrs"].get(key)
+                if isinstance(v, (int, float, np.integer, np.floating)) and not (key in growth
+                                                        and abs(v) <= abs(growth[key])):
+                    growth[key] = float(v)
         info = {
             "case": case,
             "files": [fd["path"] for fd in files],
@@ -261,5 +297,6 @@ class RunReader:
             "nCells": int(run_cells.size),
             "samplesPerCell": [int(nvalid.min()) if nvalid.size else 0,
                                int(nvalid.max()) if nvalid.size else 0],
+            "growthTotals": growth,
         }
         return run_cells, data, info
