@@ -10,8 +10,9 @@ extent (--slice: across that axis, on any mesh), with the particles around it.
 
   pvbatch coagulationView.py [--case DIR] [--png FILE] [--field M0] [--cloud NAME]
                              [--size 1600x900 | 1600] [--slice x|y|z]
-      renders FILE (no display: run it under xvfb-run, or pvbatch
-      --force-offscreen-rendering where ParaView was built for it)
+      renders FILE (no display: run it under virtualDisplay from etc/functions, or
+      xvfb-run -s "-screen 0 1280x1024x24 -noreset"; Debian's pvbatch has no
+      off-screen rendering without X)
   paraview --script=coagulationView.py
       the same view in ParaView's window, for the case in the current folder
 

@@ -25,7 +25,7 @@ setEntry . system/controlDict writeInterval 0.125
 setEntry . constant/coagulationProperties sampling/tRelax 0.12
 setEntry . constant/coagulationProperties cloudFunctions/psdAxis/timeStart 0.12
 
-./Allrun > log.Allrun 2>&1 || { tail -30 log.Allrun; fail "Allrun"; }
+runAllrun
 checkBalance log.coagulationFoam
 grep -q "deposited lowerWall" log.coagulationFoam || fail "nothing deposited on lowerWall"
 grep -q "deposited upperWall" log.coagulationFoam || fail "nothing deposited on upperWall"

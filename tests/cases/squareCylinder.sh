@@ -15,7 +15,7 @@ setEntry . system/controlDict functions/particles/timeStart 0.2
 setEntry . constant/coagulationProperties cloudFunctions/wakePsd/timeStart 0.45
 sed -i "s/-time '2:'/-time '0.2:'/" Allrun
 
-./Allrun > log.Allrun 2>&1 || { tail -30 log.Allrun; fail "Allrun"; }
+runAllrun
 checkBalance log.pimpleFoam
 grep -q "deposited cylinder" log.pimpleFoam || fail "nothing deposited on the cylinder"
 [ ! -d 0.1/lagrangian ] && [ ! -f 0.1/M0 ] || fail "particles before the function object's timeStart"
