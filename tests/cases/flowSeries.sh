@@ -43,6 +43,14 @@ while k * dw <= end + 1e-12:
 PY
 }
 
+# uniformU dir ux: the duct's U in the folder dir (made), uniform (ux 0 0) inside and at the inlet
+uniformU()
+{
+    mkdir -p "$1"
+    sed "s/uniform (1 0 0)/uniform ($2 0 0)/g" "$COAGULATIONFOAM_DIR/tutorials/constantKernelDuct/0/U" \
+        > "$1/U"
+}
+
 # flowCase dir: a flow case folder with the duct's mesh (the U files added by the caller)
 flowCase()
 {
@@ -152,12 +160,7 @@ echo "ok decomposed flow: the error names reconstructPar"
 #    field and 1/4 of the later one. U of 1, 2 and 1 m/s at 0, 0.1 and 0.2; the run writes
 #    U of its time every 0.025
 steps=$(flowCase series_stepsFlow)
-for tu in "0 1" "0.1 2" "0.2 1"; do
-    set -- $tu
-    mkdir -p "$steps/$1"
-    sed "s/uniform (1 0 0)/uniform ($2 0 0)/g" "$COAGULATIONFOAM_DIR/tutorials/constantKernelDuct/0/U" \
-        > "$steps/$1/U"
-done
+uniformU "$steps/0" 1; uniformU "$steps/0.1" 2; uniformU "$steps/0.2" 1
 c=$(newCase constantKernelDuct series_quarter)
 setEntry "$c" system/controlDict endTime 0.2
 setEntry "$c" system/controlDict writeInterval 0.025
@@ -187,9 +190,7 @@ echo "ok the series' U at a quarter and three quarters of its intervals"
 rates=$(flowCase series_ratesFlow)
 for tk in "0 1e-4" "0.04 3e-4" "0.08 1e-4"; do
     set -- $tk
-    mkdir -p "$rates/$1"
-    sed "s/uniform (1 0 0)/uniform (0 0 0)/g" "$COAGULATIONFOAM_DIR/tutorials/constantKernelDuct/0/U" \
-        > "$rates/$1/U"
+    uniformU "$rates/$1" 0
     cat > "$rates/$1/kS" <<DICT
 FoamFile { version 2.0; format ascii; class volScalarField; object kS; }
 dimensions [1 -2 -1 0 0 0 0];

@@ -13,6 +13,7 @@
 #     within the time limit (unrotated, a particle went back and forth across the sides:
 #     about 800 moves/s against 1.6 M); balances closed.
 . "$(dirname "$0")/caseLib.sh"
+. "$(dirname "$0")/openfoamCases.sh"
 
 # 1. TJunction, the function object from timeStart 0.1
 mkdir -p "$workDir"
@@ -26,20 +27,7 @@ setEntry . system/controlDict endTime 0.12
 setEntry . system/controlDict writeInterval 0.01
 foamDictionary system/controlDict -entry functions/particles \
     -add "{ type coagulationCloud; libs (coagulationModels); timeStart 0.1; }" > /dev/null
-cat > constant/coagulationProperties <<'DICT'
-FoamFile { version 2.0; format ascii; class dictionary; object coagulationProperties; }
-algorithm       SWA;
-splitting       Strang;
-particles       { density 1800; massUnit 9.42e-22; }
-kernel          { type constant; K0 3e-11; }
-inception       { rate 0; mass 1; }
-inflow          { patches (inlet); density 1e12; mass 1; }
-statisticalWeight { n 1; V1 2e-11; }
-seed            1;
-sampling        { tRelax 0.1; sampleInterval 1e-3; }
-dispersion      { type turbulent; Sct 0.7; }
-patchInteraction { patches { defaultFaces stick; } }
-DICT
+inflowParticles constant/coagulationProperties inlet defaultFaces 0.1 1e-3
 rc=0; timeout 600 pimpleFoam > log.pimpleFoam 2>&1 || rc=$?
 [ "$rc" -eq 0 ] || { grep -A8 "FOAM FATAL" log.pimpleFoam | head -20; fail "TJunction: pimpleFoam exit $rc"; }
 checkBalance log.pimpleFoam
@@ -53,68 +41,8 @@ echo "ok TJunction: the function object from timeStart 0.1 in one run, $particle
 
 # 2. pipeCyclic: the converged flow, then the particles with the walk
 pc="$workDir/pipeCyclic"
-rm -rf "$pc" && mkdir -p "$pc"
-openfoamTutorial incompressible/simpleFoam/pipeCyclic "$pc/flow" || fail "no pipeCyclic tutorial"
-cd "$pc/flow"
-"$COAGULATIONFOAM_PYTHON" - <<'PY'
-# the coded swirl (U = (1, 2 Cf x (1 0 0)), a rotation of -2 rad/s about x) as OpenFOAM's
-# cylindricalInletVelocity: -2 rad/s = -60/pi rpm
-import re
-s = open("0.orig/U").read()
-i = s.index("    inlet\n")
-j = s.index("    }\n", s.index("#};", i)) + 6
-s = s[:i] + """    inlet
-    {
-        type            cylindricalInletVelocity;
-        axis            (1 0 0);
-        origin          (0 0 0);
-        axialVelocity   constant 1;
-        radialVelocity  constant 0;
-        rpm             constant -19.098593171027442;
-        value           $internalField;
-    }
-""" + s[j:]
-open("0.orig/U", "w").write(s)
-PY
-runApplication blockMesh
-runApplication topoSet
-runApplication refineHexMesh c0 -overwrite
-rm -rf 0 && cp -r 0.orig 0
-runApplication simpleFoam
-latest=$(foamListTimes -latestTime -noZero)
-[ -n "$latest" ] || fail "pipeCyclic: simpleFoam wrote no time"
+pipeCyclicCase "$pc" || fail "pipeCyclic: the case"
 cd "$pc"
-cp -r flow/constant flow/system .
-rm -rf constant/polyMesh/sets
-mkdir 0 && for f in U nut k epsilon p; do cp "flow/$latest/$f" 0/; done
-cat > constant/coagulationProperties <<'DICT'
-FoamFile { version 2.0; format ascii; class dictionary; object coagulationProperties; }
-algorithm       SWA;
-splitting       Strang;
-particles       { density 1800; massUnit 9.42e-22; }
-kernel          { type constant; K0 3e-11; }
-inception       { rate 0; mass 1; }
-inflow          { patches (inlet); density 1e12; mass 1; }
-statisticalWeight { n 1; V1 2e-11; }
-seed            1;
-sampling        { tRelax 0.5; sampleInterval 0.01; }
-dispersion      { type turbulent; Sct 0.7; }
-patchInteraction { patches { walls stick; } }
-DICT
-cat > system/controlDict <<'DICT'
-FoamFile { version 2.0; format ascii; class dictionary; object controlDict; }
-application     coagulationFoam;
-libs            (turbulenceModels incompressibleTurbulenceModels);
-startFrom       latestTime;
-startTime       0;
-stopAt          endTime;
-endTime         1;
-deltaT          0.01;
-writeControl    timeStep;
-writeInterval   50;
-writeFormat     binary;
-runTimeModifiable false;
-DICT
 rc=0; timeout 120 coagulationFoam > log.coagulationFoam 2>&1 || rc=$?
 [ "$rc" -ne 124 ] || fail "pipeCyclic: 100 steps with the walk did not end within 120 s"
 [ "$rc" -eq 0 ] || { grep -A8 "FOAM FATAL" log.coagulationFoam | head -20; fail "pipeCyclic: exit $rc"; }
