@@ -36,6 +36,6 @@ for r in $(seq "$rounds"); do
     done
 done
 for c in cyclic walls; do
-    awk -v c="$c" '$1 == c { v[n++] = $2 } END { asort(v); printf "median %s: %.3g particle moves/s over %d rounds\n", c, v[int((n + 1)/2)], n }' \
-        "$out/moves.txt"
+    awk -v c="$c" '$1 == c { print $2 }' "$out/moves.txt" | sort -g \
+        | awk -v c="$c" '{ v[NR] = $1 } END { printf "median %s: %.3g particle moves/s over %d rounds\n", c, v[int((NR + 1)/2)], NR }'
 done
