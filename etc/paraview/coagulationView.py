@@ -34,6 +34,7 @@ from paraview.simple import (ColorBy, CreateLayout, CreateView, ExtractBlock,
 
 
 BAR = 200  # the pixels below each picture for its colour bar
+MIN_PICTURE = 80  # the fewest pixels of a picture across and above its bar
 
 
 def fail(msg):
@@ -119,6 +120,13 @@ def main(argv):
         view_h = int(min(max(0.9 * pw * extent[up] / extent[across], 80), 900)) + BAR
         h = 2 * view_h if stacked else view_h
     pw, ph = (w, h / 2.0) if stacked else (w / 2.0, h)
+    # each view needs room for a picture above its colour bar
+    if pw < MIN_PICTURE or ph - BAR < MIN_PICTURE:
+        fail("--size %s leaves each of the two views (%s) %dx%d pixels: too small for a picture "
+             "of at least %d pixels above its %d-pixel colour bar; give at least %dx%d"
+             % (args.size, "stacked" if stacked else "side by side", pw, ph, MIN_PICTURE, BAR,
+                MIN_PICTURE * (1 if stacked else 2),
+                (MIN_PICTURE + BAR) * (2 if stacked else 1)))
     # the domain fills its view above the bar: k pixels a metre
     k = min(0.9 * pw / extent[across], 0.9 * (ph - BAR) / extent[up])
     layout = CreateLayout("coagulationView")

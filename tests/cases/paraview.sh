@@ -78,6 +78,9 @@ duct=$c/duct.png
 # a slice asked for on a mesh one cell thick: across it, through its 50 cells
 paraViewRun "$pv" "$script" --case . --png ductY.png --slice y > log.slice 2>&1 || { cat log.slice; fail "--slice y"; }
 grep -q "the slice y = 0.002 through 50 cells" log.slice || { cat log.slice; fail "the duct's slice"; }
+# a size with no room for the stacked views above their colour bars: refused, exit 2
+rc=0; paraViewRun "$pv" "$script" --case . --png small.png --size 600x400 > log.small 2>&1 || rc=$?
+[ "$rc" -eq 2 ] && grep -q "too small for a picture" log.small || { cat log.small; fail "--size 600x400: exit $rc"; }
 
 # the domain's pixels in each view: the picture is the two views stacked (both domains are
 # long), each the domain above its colour bar's 200 pixels, scaled to fit 90 % of the view
