@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (see COPYING)
 # The duct as a case of OpenFOAM's transient solvers with the coagulationCloud function object
-# (case_functionObject, case_functionObjectFaults); sourced after caseLib.sh.
+# (case_functionObject, case_faults, case_liveFields); sourced after caseLib.sh.
 
 # fo case [U]: the function object in the case's controlDict
 fo()
@@ -22,13 +22,19 @@ scalarTransport()
 FoamFile { version 2.0; format ascii; class dictionary; object transportProperties; }
 DT 1e-9;
 DICT
-    foamDictionary -case "$c" "$c/system/fvSchemes" -entry divSchemes/"div(phi,T)" \
-        -add "Gauss upwind" > /dev/null
-    foamDictionary -case "$c" "$c/system/fvSolution" -entry solvers/T \
-        -add "{ solver PBiCGStab; preconditioner DILU; tolerance 1e-12; relTol 0; }" > /dev/null
-    foamDictionary -case "$c" "$c/system/fvSolution" -entry SIMPLE \
-        -add "{ nNonOrthogonalCorrectors 0; }" > /dev/null
+    scalarTransportSchemes "$c" 1e-12
     setEntry "$c" system/controlDict application scalarTransportFoam
+}
+
+# scalarTransportSchemes case tolerance: scalarTransportFoam's scheme and solver for T
+scalarTransportSchemes()
+{
+    foamDictionary -case "$1" "$1/system/fvSchemes" -entry divSchemes/"div(phi,T)" \
+        -add "Gauss upwind" > /dev/null
+    foamDictionary -case "$1" "$1/system/fvSolution" -entry solvers/T \
+        -add "{ solver PBiCGStab; preconditioner DILU; tolerance $2; relTol 0; }" > /dev/null
+    foamDictionary -case "$1" "$1/system/fvSolution" -entry SIMPLE \
+        -add "{ nNonOrthogonalCorrectors 0; }" > /dev/null
 }
 
 # pimpleCase dir: the duct as a laminar pimpleFoam case (p, nu, fvSchemes, fvSolution)

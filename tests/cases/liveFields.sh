@@ -18,6 +18,7 @@
 #     turbulent walk's nut on fields that grow in time in a flow series, against the runs at
 #     their time means (time rescaling).
 . "$(dirname "$0")/caseLib.sh"
+. "$(dirname "$0")/functionObjectCases.sh"
 r0=3e8
 b=6e9
 check() { PYTHONPATH="$COAGULATIONFOAM_DIR/src/python${PYTHONPATH:+:$PYTHONPATH}" \
@@ -54,12 +55,7 @@ ramp
     injectionRateSuSp { T ($b 0); }
 }
 DICT
-    foamDictionary -case "$c" "$c/system/fvSchemes" -entry divSchemes/"div(phi,T)" \
-        -add "Gauss upwind" > /dev/null
-    foamDictionary -case "$c" "$c/system/fvSolution" -entry solvers/T \
-        -add "{ solver PBiCGStab; preconditioner DILU; tolerance 1e-14; relTol 0; }" > /dev/null
-    foamDictionary -case "$c" "$c/system/fvSolution" -entry SIMPLE \
-        -add "{ nNonOrthogonalCorrectors 0; }" > /dev/null
+    scalarTransportSchemes "$c" 1e-14
     foamDictionary -case "$c" "$c/constant/coagulationProperties" -entry inflow -remove > /dev/null
     setEntry "$c" constant/coagulationProperties inception "{ type field; field T; mass 1; }"
     setEntry "$c" constant/coagulationProperties sampling "{ tRelax 0; sampleInterval 5e-3; }"
