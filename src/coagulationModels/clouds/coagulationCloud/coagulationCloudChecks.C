@@ -165,12 +165,13 @@ void Foam::coagulation::coagulationCloud::checkStep()
     {
         FatalIOErrorInFunction(runTime.controlDict())
             << "Entry 'deltaT' in " << runTime.controlDict().name()
-            << " changed from " << deltaT_ << " to " << deltaT
+            << " changed from " << Foam::name(deltaT_) << " to "
+            << Foam::name(deltaT)
             << " at time " << runTime.timeName() << " while the run ran:"
             << " the particle population steps with the fixed deltaT of the"
             << " start (its samples, random streams and restarts are on that"
-            << " step)." << nl << "    Set deltaT back to " << deltaT_
-            << ", or stop the run and restart it from its latest written"
+            << " step)." << nl << "    Set deltaT back to "
+            << Foam::name(deltaT_) << ", or stop the run and restart it from its latest written"
             << " time with the new deltaT" << nl << exit(FatalIOError);
     }
 }
