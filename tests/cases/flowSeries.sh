@@ -14,7 +14,8 @@
 #  3. a series with a time without U, one that ends before the run, one on another mesh and
 #     a folder that is not there are refused with a FatalIOError naming them (a flowSeries
 #     inside the function object: case_functionObject);
-#  4. a gap of purged writes is refused naming its times (maxGap accepts it); 5. a flow run
+#  4. a gap of purged writes is refused naming its times (maxGap accepts it; a maxGap not
+#     above 0 or without a flowSeries is refused); 5. a flow run
 #     never reconstructed is named as such;
 #  6. the interpolation at a quarter of an interval, of U and of a model's field (kS of surface
 #     growth), against the exact linear interpolation.
@@ -147,6 +148,12 @@ c="$workDir/series_bad_purged"
 setEntry "$c" constant/coagulationProperties transport/maxGap 0.14
 (cd "$c" && coagulationFoam > log 2>&1) || { tail -20 "$c/log"; fail "purged: maxGap 0.14 refused"; }
 echo "ok purged series: the gap 0 to 0.14 refused, accepted with maxGap"
+# (a series of two times has no gap to compare: the entry is checked all the same)
+two=$(flowCase series_twoTimesFlow)
+writeSeries "$two" 0.2 0.2
+refuse negativeGap "Entry 'maxGap' = -1" "{ type frozenFlow; flowSeries \"$two\"; maxGap -1; }"
+refuse gapWithoutSeries "no 'flowSeries'" "{ type frozenFlow; maxGap 0.1; }"
+echo "ok maxGap: not a time > 0, or without flowSeries: refused"
 
 # 5. A flow run decomposed and never reconstructed: the error says so
 decomposed=$(flowCase series_decomposedFlow)

@@ -9,9 +9,9 @@
 #  2. simpleFoam/pipeCyclic (a pipe sector whose sides are a rotational cyclicAMI pair; its
 #     coded swirl inlet given as cylindricalInletVelocity, since coded conditions are not
 #     compiled as root) -> coagulationFoam with the turbulent walk and sticking walls: the
-#     walk's displacement is rotated with the particle across the sides, so 100 steps end
-#     within the time limit (unrotated, a particle went back and forth across the sides:
-#     about 800 moves/s against 1.6 M); balances closed.
+#     rest of a walk is rotated with the particle across the sides, so that it does not carry
+#     the particle back across them again and again; 100 steps end within the time limit
+#     (tests/cases/openfoamCases.sh), balances closed.
 . "$(dirname "$0")/caseLib.sh"
 . "$(dirname "$0")/openfoamCases.sh"
 

@@ -169,7 +169,7 @@ def compute(cases, t_relax=None, t_end=None, u=None, x_inlet=0.0, analytic_kind=
         "realisations": len(runs),
         "density": num("density"),
         "massUnit": num("massUnit"),
-        "growthTotals": growth_totals(runs),
+        "growthTotals": samples.largest_totals(r.get("growthTotals", {}) for r in runs),
         "interval": interval,
         "runs": runs,
     }
@@ -218,17 +218,6 @@ def compute(cases, t_relax=None, t_end=None, u=None, x_inlet=0.0, analytic_kind=
         "rel": rel, "nsd": nsd, "edges": (lo, hi), "meanMass": mean_mass,
         "meanMassCi": mean_mass_ci,
     }
-
-
-def growth_totals(runs):
-    """The growth totals of runs (RunReader.read's info): of each the value of largest
-    magnitude."""
-    out = {}
-    for r in runs:
-        for key, v in r.get("growthTotals", {}).items():
-            if key not in out or abs(v) > abs(out[key]):
-                out[key] = v
-    return out
 
 
 def lighter_than_unit(mean, centres, below=0.5):

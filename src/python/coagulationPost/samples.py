@@ -72,6 +72,19 @@ def same(a, b):
     return str(a) == str(b)
 
 
+def largest_totals(attr_sets):
+    """Of each of GROWTH_TOTALS, the number of largest magnitude over the attribute sets
+    (files, runs), so that growth or shrinking booked in any of them shows."""
+    out = {}
+    for attrs in attr_sets:
+        for key in GROWTH_TOTALS:
+            v = attrs.get(key)
+            if isinstance(v, (int, float, np.integer, np.floating)) and not (
+                    key in out and abs(v) <= abs(out[key])):
+                out[key] = float(v)
+    return out
+
+
 def find_sample_files(case):
     if not os.path.isdir(case):
         raise InputError("no such case: %s is not a folder" % case)
@@ -278,15 +291,8 @@ class RunReader:
         seeds = sorted({fd["attrs"].get("seed") for fd in files if fd["attrs"].get("seed") is not None},
                        key=str)
         t_all = np.concatenate([fd["times"] for fd in files])
-        # the growth totals: of each the value of largest magnitude over the files (each
-        # processor's and run start's own), so that growth booked in any file shows
-        growth = {}
-        for fd in files:
-            for key in GROWTH_TOTALS:
-                v = fd["attrs"].get(key)
-                if isinstance(v, (int, float, np.integer, np.floating)) and not (key in growth
-                                                        and abs(v) <= abs(growth[key])):
-                    growth[key] = float(v)
+        # the growth totals of the files, each processor's and run start's own
+        growth = largest_totals(fd["attrs"] for fd in files)
         info = {
             "case": case,
             "files": [fd["path"] for fd in files],

@@ -123,25 +123,17 @@ void Foam::coagulation::cellStepper::advanceCell
     }
     outcome.events = w.events;
 
-    // Growth far too fast for the mass unit can take a mass, or its moment
-    // w m^3, past the largest number (Inf with the traps held here): named
-    // as the cell step's failure, not SIGFPE in a later sum
-    if (!std::isfinite(w.events.grownMass) || !std::isfinite(w.events.lostMass))
-    {
-        throw std::overflow_error
-        (
-            "the mass grown in the step is past the largest number"
-        );
-    }
-
     // Write the cell's new state back: survivors in place, new particles
     // placed with the cell's stream (in population order, as they will be
     // constructed), the rest recorded as gone
+    // (Growth far too fast for the mass unit can take a particle's mass, or
+    // its moment w m^3, past the largest number, Inf with the traps held
+    // here: named as the cell step's failure, not SIGFPE in a later sum)
     w.survived.assign(np, 0);
     for (const coag::Particle& cp : population.particles)
     {
         const double m = cp.type.mass;
-        if (!std::isfinite(cp.weight*m*m*m))
+        if (growth.active() && !std::isfinite(cp.weight*m*m*m))
         {
             std::ostringstream os;
             os  << "a particle of mass " << m << " (mass units) has a third"

@@ -171,8 +171,9 @@ void Foam::coagulation::coagulationCloud::checkStep()
             << " the particle population steps with the fixed deltaT of the"
             << " start (its samples, random streams and restarts are on that"
             << " step)." << nl << "    Set deltaT back to "
-            << Foam::name(deltaT_) << ", or stop the run and restart it from its latest written"
-            << " time with the new deltaT" << nl << exit(FatalIOError);
+            << Foam::name(deltaT_) << ", or stop the run and restart it"
+            << " from its latest written time with the new deltaT" << nl
+            << exit(FatalIOError);
     }
 }
 

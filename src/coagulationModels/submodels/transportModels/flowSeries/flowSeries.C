@@ -52,6 +52,13 @@ void Foam::coagulation::flowSeries::checkGaps() const
     // restarted later) would interpolate straight across changes the flow
     // made in it. The spacing is the lower median of the intervals; a gap
     // more than maxGapRatio of them is refused unless 'maxGap' allows it
+    if (dict_.found("maxGap") && !(dict_.get<scalar>("maxGap") > 0))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry 'maxGap' = " << dict_.get<scalar>("maxGap") << " in "
+            << dict_.name() << " must be a time > 0 [s]" << nl
+            << exit(FatalIOError);
+    }
     const label n = times_.size() - 1;
     if (n < 2)
     {
@@ -67,12 +74,6 @@ void Foam::coagulation::flowSeries::checkGaps() const
     const scalar spacing = sorted[(n - 1)/2];
     const scalar maxGap =
         dict_.getOrDefault<scalar>("maxGap", maxGapRatio*spacing);
-    if (!(maxGap > 0))
-    {
-        FatalIOErrorInFunction(dict_)
-            << "Entry 'maxGap' = " << maxGap << " in " << dict_.name()
-            << " must be a time > 0 [s]" << nl << exit(FatalIOError);
-    }
     forAll(gaps, i)
     {
         if (gaps[i] > maxGap*(1 + 1e-9))

@@ -63,6 +63,14 @@ Foam::coagulation::transportModels::frozenFlow::frozenFlow
     (
         dict, {"type", "interpolationSchemes", "maxCo", "flowSeries", "maxGap"}
     );
+    if (dict.found("maxGap") && !dict.found("flowSeries"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'maxGap' in " << dict.name() << " is the longest gap"
+            << " between a flow series' written times, but there is no"
+            << " 'flowSeries'." << nl << "    Remove the entry, or name the"
+            << " flow case with 'flowSeries'" << nl << exit(FatalIOError);
+    }
     // A flow series (its 'flowSeries' entry) is read by the cloud's
     // flowFields, with the submodels' fields
     series_ = flowFields::of(cloud.mesh()).series();
