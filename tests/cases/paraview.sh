@@ -120,7 +120,7 @@ PY
 # on its own Xvfb: each opens its window the first time. Xvfb by default resets when its last
 # client leaves, as pvbatch's display test does just before pvbatch opens its window, and
 # refuses the window while it resets ("bad X server connection"), the more often the busier
-# the machine: half of such renders failed here before virtualDisplay's -noreset
+# the machine; virtualDisplay's Xvfb does not reset
 load="$workDir/paraview_load"
 rm -rf "$load" && mkdir -p "$load"
 busy=() renders=()
